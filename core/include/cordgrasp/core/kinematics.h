@@ -1,0 +1,30 @@
+#pragma once
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <vector>
+
+#include "cordgrasp/core/hand_model.h"
+
+namespace cordgrasp {
+
+/// Sets every mimic joint from its master: q[j] = multiplier·q[master] + offset.
+Eigen::VectorXd apply_couplings(const HandModel& hand, const Eigen::VectorXd& q);
+
+/// Clamps every moving joint to [lower, upper] (continuous joints untouched).
+Eigen::VectorXd clamp_to_limits(const HandModel& hand, const Eigen::VectorXd& q);
+
+/// Forward kinematics: world pose X_WL of every link for joint vector q (one entry per joint)
+/// with the root link at X_WB. q is used as given; call apply_couplings first for mimic joints.
+/// @throws std::invalid_argument when q has the wrong size.
+std::vector<Eigen::Isometry3d> link_poses(const HandModel& hand, const Eigen::VectorXd& q,
+                                          const Eigen::Isometry3d& X_WB =
+                                              Eigen::Isometry3d::Identity());
+
+/// World pose of the GCP given the link poses from link_poses().
+Eigen::Isometry3d gcp_pose(const HandModel& hand, const std::vector<Eigen::Isometry3d>& X_WL);
+
+/// Root pose X_WB that puts the GCP at X_WG for joint vector q.
+Eigen::Isometry3d root_pose_for_gcp(const HandModel& hand, const Eigen::VectorXd& q,
+                                    const Eigen::Isometry3d& X_WG);
+
+}  // namespace cordgrasp

@@ -1,0 +1,38 @@
+#pragma once
+#include <string>
+
+#include "cordgrasp/core/mesh.h"
+
+namespace cordgrasp {
+
+/// Length units of a mesh file; converted to meters at load.
+enum class LengthUnits { kMeters, kMillimeters, kAuto };
+
+/// Parses "m", "mm" or "auto". @throws std::invalid_argument otherwise.
+LengthUnits parse_length_units(const std::string& text);
+
+struct MeshLoadOptions {
+  LengthUnits units = LengthUnits::kMeters;  ///< units of the file's coordinates
+  double auto_mm_diagonal = 5.0;  ///< kAuto picks mm when the bbox diagonal exceeds this [file units]
+};
+
+/// What load_mesh did besides loading.
+struct MeshLoadReport {
+  int degenerate_dropped = 0;  ///< zero-area or repeated-index triangles removed
+  double scale_to_m = 1.0;     ///< factor applied to the file's coordinates
+  bool auto_chose_mm = false;  ///< kAuto decided the file was in millimeters
+};
+
+/// Loads OBJ, STL (ascii/binary), PLY, OFF, DAE or glTF via assimp as a triangle soup in meters.
+/// Keeps the soup as authored (no welding, no normal fixing, DAE up-axis not applied).
+/// Degenerate triangles are dropped and counted in `report`.
+/// @throws InputError "load_mesh: '<path>': <problem>" for a missing/unreadable file, unknown
+///         format, zero triangles, NaN/inf coordinates or all-degenerate geometry.
+Mesh load_mesh(const std::string& path, const MeshLoadOptions& options = {},
+               MeshLoadReport* report = nullptr);
+
+/// Writes the mesh as Wavefront OBJ (meters, 9 significant digits), atomically (temp + rename).
+/// @throws InputError when the file cannot be written.
+void save_mesh_obj(const Mesh& mesh, const std::string& path);
+
+}  // namespace cordgrasp

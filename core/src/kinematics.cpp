@@ -1,0 +1,73 @@
+#include "cordgrasp/core/kinematics.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace cordgrasp {
+
+Eigen::VectorXd apply_couplings(const HandModel& hand, const Eigen::VectorXd& q) {
+  Eigen::VectorXd out = q;
+  // Joints are in topological order, but a mimic master can sit anywhere; masters are never
+  // mimic joints themselves (checked at load), so one pass suffices.
+  for (size_t j = 0; j < hand.joints.size(); ++j) {
+    const auto& m = hand.joints[j].mimic;
+    if (m) out[j] = m->multiplier * q[m->master_joint] + m->offset;
+  }
+  return out;
+}
+
+Eigen::VectorXd clamp_to_limits(const HandModel& hand, const Eigen::VectorXd& q) {
+  Eigen::VectorXd out = q;
+  for (size_t j = 0; j < hand.joints.size(); ++j) {
+    const Joint& joint = hand.joints[j];
+    if (joint.type == JointType::kRevolute || joint.type == JointType::kPrismatic)
+      out[j] = std::clamp(out[j], joint.lower, joint.upper);
+  }
+  return out;
+}
+
+namespace {
+Eigen::Isometry3d joint_motion(const Joint& joint, double value) {
+  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+  switch (joint.type) {
+    case JointType::kRevolute:
+    case JointType::kContinuous:
+      X.linear() = Eigen::AngleAxisd(value, joint.axis).toRotationMatrix();
+      break;
+    case JointType::kPrismatic:
+      X.translation() = value * joint.axis;
+      break;
+    case JointType::kFixed:
+      break;
+  }
+  return X;
+}
+}  // namespace
+
+std::vector<Eigen::Isometry3d> link_poses(const HandModel& hand, const Eigen::VectorXd& q,
+                                          const Eigen::Isometry3d& X_WB) {
+  if (q.size() != static_cast<Eigen::Index>(hand.joints.size()))
+    throw std::invalid_argument("link_poses: q has " + std::to_string(q.size()) +
+                                " entries, hand '" + hand.name + "' has " +
+                                std::to_string(hand.joints.size()) + " joints");
+  std::vector<Eigen::Isometry3d> X_WL(hand.links.size(), Eigen::Isometry3d::Identity());
+  X_WL[hand.root_link] = X_WB;
+  for (size_t j = 0; j < hand.joints.size(); ++j) {
+    const Joint& joint = hand.joints[j];
+    X_WL[joint.child_link] = X_WL[joint.parent_link] * joint.X_PJ * joint_motion(joint, q[j]);
+  }
+  return X_WL;
+}
+
+Eigen::Isometry3d gcp_pose(const HandModel& hand, const std::vector<Eigen::Isometry3d>& X_WL) {
+  return X_WL.at(hand.gcp.link) * hand.gcp.X_LG;
+}
+
+Eigen::Isometry3d root_pose_for_gcp(const HandModel& hand, const Eigen::VectorXd& q,
+                                    const Eigen::Isometry3d& X_WG) {
+  const Eigen::Isometry3d X_BG = gcp_pose(hand, link_poses(hand, q));
+  return X_WG * X_BG.inverse();
+}
+
+}  // namespace cordgrasp

@@ -1,0 +1,159 @@
+#include "cordgrasp/core/mesh_io.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+
+#include "cordgrasp/core/atomic_file.h"
+#include "cordgrasp/core/error.h"
+#include "cordgrasp/core/mesh_properties.h"
+
+namespace cordgrasp {
+namespace fs = std::filesystem;
+
+LengthUnits parse_length_units(const std::string& text) {
+  if (text == "m") return LengthUnits::kMeters;
+  if (text == "mm") return LengthUnits::kMillimeters;
+  if (text == "auto") return LengthUnits::kAuto;
+  throw std::invalid_argument("units must be m, mm or auto, not '" + text + "'");
+}
+
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& problem) {
+  throw InputError("load_mesh: '" + path + "': " + problem);
+}
+
+/// Appends the triangles of `node` and its children, with node transforms applied (as RViz and
+/// ROS do). Vertices are welded on exact coordinates so that C is the mean of distinct points.
+struct SoupBuilder {
+  std::map<std::tuple<double, double, double>, int> index_of;
+  Mesh mesh;
+  int non_finite = 0;
+
+  int add_vertex(const aiVector3D& p) {
+    const Eigen::Vector3d v(p.x, p.y, p.z);
+    if (!v.allFinite()) {
+      ++non_finite;
+      return -1;
+    }
+    auto [it, inserted] =
+        index_of.emplace(std::make_tuple(v.x(), v.y(), v.z()), int(mesh.vertices.size()));
+    if (inserted) mesh.vertices.push_back(v);
+    return it->second;
+  }
+
+  void add_node(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent) {
+    const aiMatrix4x4 X = parent * node.mTransformation;
+    for (unsigned m = 0; m < node.mNumMeshes; ++m) {
+      const aiMesh& am = *scene.mMeshes[node.mMeshes[m]];
+      for (unsigned f = 0; f < am.mNumFaces; ++f) {
+        const aiFace& face = am.mFaces[f];
+        if (face.mNumIndices != 3) continue;  // points and lines are not surface
+        Eigen::Vector3i tri;
+        for (int k = 0; k < 3; ++k) tri[k] = add_vertex(X * am.mVertices[face.mIndices[k]]);
+        if (tri.minCoeff() < 0) continue;
+        mesh.triangles.push_back(tri);
+      }
+    }
+    for (unsigned c = 0; c < node.mNumChildren; ++c) add_node(scene, *node.mChildren[c], X);
+  }
+};
+
+}  // namespace
+
+Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoadReport* report) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) fail(path, "file not found");
+  if (fs::is_directory(path, ec)) fail(path, "is a directory, not a mesh file");
+  {
+    std::ifstream probe(path, std::ios::binary);
+    if (!probe) fail(path, "cannot open for reading");
+  }
+  Assimp::Importer importer;
+  std::string ext = fs::path(path).extension().string();
+  if (ext.empty() || !importer.IsExtensionSupported(ext))
+    fail(path, "unknown mesh format '" + ext + "' (use OBJ, STL, PLY, OFF, DAE or glTF)");
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate);
+  if (!scene || !scene->mRootNode)
+    fail(path, std::string("cannot parse: ") + importer.GetErrorString());
+
+  SoupBuilder builder;
+  builder.add_node(*scene, *scene->mRootNode, aiMatrix4x4());
+  Mesh& mesh = builder.mesh;
+  if (builder.non_finite > 0)
+    fail(path, std::to_string(builder.non_finite) + " NaN/inf vertex coordinate(s)");
+  if (mesh.triangles.empty()) fail(path, "0 triangles");
+
+  MeshLoadReport rep;
+  double scale = 1.0;
+  if (options.units == LengthUnits::kMillimeters) {
+    scale = 1e-3;
+  } else if (options.units == LengthUnits::kAuto) {
+    if (mesh_bounds(mesh).size().norm() > options.auto_mm_diagonal) {
+      scale = 1e-3;
+      rep.auto_chose_mm = true;
+    }
+  }
+  rep.scale_to_m = scale;
+  if (scale != 1.0)
+    for (auto& v : mesh.vertices) v *= scale;
+
+  // Drop degenerate triangles: repeated indices or zero area (relative to the mesh size).
+  const double diag = mesh_bounds(mesh).size().norm();
+  const double min_double_area = 1e-12 * diag * diag;
+  std::vector<Eigen::Vector3i> kept;
+  kept.reserve(mesh.triangles.size());
+  for (const auto& t : mesh.triangles) {
+    const bool repeated = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+    const auto& a = mesh.vertices[t[0]];
+    if (!repeated &&
+        (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a).norm() > min_double_area)
+      kept.push_back(t);
+  }
+  rep.degenerate_dropped = int(mesh.triangles.size() - kept.size());
+  if (kept.empty())
+    fail(path, "all " + std::to_string(mesh.triangles.size()) + " triangles are degenerate");
+  mesh.triangles = std::move(kept);
+
+  // Compact: keep only referenced vertices, in first-use order.
+  std::vector<int> remap(mesh.vertices.size(), -1);
+  std::vector<Eigen::Vector3d> used;
+  used.reserve(mesh.vertices.size());
+  for (auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      int& r = remap[t[k]];
+      if (r < 0) {
+        r = int(used.size());
+        used.push_back(mesh.vertices[t[k]]);
+      }
+      t[k] = r;
+    }
+  mesh.vertices = std::move(used);
+  mesh.name = fs::path(path).stem().string();
+  if (report) *report = rep;
+  return mesh;
+}
+
+void save_mesh_obj(const Mesh& mesh, const std::string& path) {
+  std::ostringstream out;
+  out << "# " << mesh.name << " (cordgrasp, meters)\n" << std::setprecision(9);
+  for (const auto& v : mesh.vertices) out << "v " << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
+  for (const auto& t : mesh.triangles)
+    out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+  write_file_atomically(path, out.str());
+}
+
+}  // namespace cordgrasp

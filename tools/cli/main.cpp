@@ -1,0 +1,32 @@
+// cordgrasp: cord-driven grasp planning, physics validation and rendering.
+#include <exception>
+#include <iostream>
+#include <string>
+
+#include "commands.h"
+#include "cordgrasp/core/version.h"
+#include "cordgrasp/render/backend_info.h"
+#include "cordgrasp/sim/backend_info.h"
+
+int main(int argc, char** argv) {
+  using namespace cordgrasp;
+  CLI::App app{
+      "cordgrasp: plan grasps for multi-fingered hands with the cord-driven planner\n"
+      "(Li et al., T-RO 2015), prove them in Bullet physics, render them to PNG.",
+      "cordgrasp"};
+  app.set_version_flag("--version", std::string("cordgrasp ") + version() + "\n  " +
+                                        sim_backend_version() + "\n  " +
+                                        render_backend_version());
+  app.require_subcommand(1);
+  app.fallthrough();
+  cli::add_info_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::cerr << "cordgrasp: error: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}

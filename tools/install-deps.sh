@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs every Debian package cordgrasp needs (Debian 12). Idempotent: quiet when all present.
+set -euo pipefail
+
+PKGS=(
+  build-essential cmake pkg-config git
+  libbullet-dev libbullet-extras-dev     # Bullet incl. double-precision (bullet-float64) + HACD
+  libeigen3-dev
+  liburdfdom-dev liburdfdom-headers-dev
+  libassimp-dev
+  libosmesa6-dev
+  libqhull-dev                            # reentrant qhull_r + qhullcpp
+  libcli11-dev
+  libpolyclipping-dev                     # Clipper 6.4.2, for the XOR measure
+  nlohmann-json3-dev
+  libpng-dev
+  libyaml-cpp-dev                         # hand description files
+  libembree-dev                           # ray queries on large meshes
+  libgtest-dev libgmock-dev googletest
+  libbenchmark-dev
+)
+
+missing=()
+for p in "${PKGS[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}" >&2
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
