@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
                                         render_backend_version());
   app.require_subcommand(1);
   app.fallthrough();
-  cli::add_info_command(app);
+  cli::add_registered_commands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

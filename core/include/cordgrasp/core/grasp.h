@@ -1,0 +1,40 @@
+#pragma once
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cordgrasp {
+
+/// A finger–object contact (spec §7.4), in the object frame.
+struct Contact {
+  int link = -1;                                    ///< HandModel link index
+  Eigen::Vector3d p_O = Eigen::Vector3d::Zero();    ///< contact point on the object [m]
+  Eigen::Vector3d n_O = Eigen::Vector3d::UnitZ();   ///< unit normal, out of the object (toward
+                                                    ///< the finger); the finger pushes along −n_O
+};
+
+/// Wall-clock time spent per planner stage [s].
+struct StageTimes {
+  double exploration_s = 0.0;  ///< cord exploration (shared by all grasps of one plan)
+  double finger_s = 0.0;       ///< pose, approach, retreat, close for this grasp
+  double quality_s = 0.0;      ///< wrench space and ε
+};
+
+/// A planned grasp: hand configuration relative to the object, its contacts and quality.
+struct Grasp {
+  Eigen::Isometry3d X_OB = Eigen::Isometry3d::Identity();  ///< hand root link in object frame
+  Eigen::Isometry3d X_OG = Eigen::Isometry3d::Identity();  ///< GCP in object frame
+  Eigen::VectorXd q;               ///< joint vector after closing (one entry per hand joint)
+  Eigen::VectorXd q_preshape;      ///< joint vector before closing
+  std::vector<Contact> contacts;
+  bool force_closure = false;
+  double epsilon = 0.0;            ///< ε quality (spec §8), in the chosen mode
+  double alpha_rad = 0.0;          ///< skewness α (spec §9) [rad], in [0, π/4]
+  std::optional<int> region_rank;  ///< cord planner: rank of the region (0 = lowest χ)
+  std::optional<double> chi_m2;    ///< cord planner: χ of that region [m²]
+  StageTimes times;
+};
+
+}  // namespace cordgrasp
