@@ -473,7 +473,7 @@ class Description {
                                                 "couplings", "thumb_links", "palm_width_m"};
     for (const auto& kv : root_) {
       const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
-      if (!kKeys.count(key)) fail(path_, "unknown key " + in_quotes(key) + " at line " + line(kv.first));
+      if (!kKeys.count(key)) error(kv.first, "unknown key " + in_quotes(key));
     }
   }
 
