@@ -1,12 +1,11 @@
 // Hand loading: a YAML hand description plus the URDF it names (urdfdom), meshes via load_mesh.
 #include "cordgrasp/core/hand_io.h"
 
+#include <console_bridge/console.h>
+#include <urdf_parser/urdf_parser.h>
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Eigenvalues>
-#include <console_bridge/console.h>
-#include <urdf_parser/urdf_parser.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -62,7 +61,8 @@ std::string in_quotes(const std::string& s) { return "'" + s + "'"; }
 class CapturingOutputHandler : public console_bridge::OutputHandler {
  public:
   void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
-    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR && first_error.empty()) first_error = text;
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR && first_error.empty())
+      first_error = text;
   }
   std::string first_error;
 };
@@ -114,8 +114,8 @@ Eigen::Isometry3d from_xyz_rpy(const Eigen::Vector3d& xyz, const Eigen::Vector3d
 // Geometry
 
 /// Meshes shared between links within one load (same file and scale).
-using MeshCache = std::map<std::tuple<std::string, double, double, double>,
-                           std::shared_ptr<const Mesh>>;
+using MeshCache =
+    std::map<std::tuple<std::string, double, double, double>, std::shared_ptr<const Mesh>>;
 
 std::string resolve_mesh_path(const std::string& urdf_path, const std::string& link,
                               const std::string& filename) {
@@ -134,15 +134,14 @@ std::string resolve_mesh_path(const std::string& urdf_path, const std::string& l
 }
 
 Geometry convert_geometry(const urdf::GeometrySharedPtr& g, const urdf::Pose& origin,
-                          const std::string& urdf_path, const std::string& link,
-                          MeshCache& cache) {
+                          const std::string& urdf_path, const std::string& link, MeshCache& cache) {
   if (!g) fail(urdf_path, "link " + in_quotes(link) + " has a collision/visual without geometry");
   Geometry out;
   out.X_LG = to_isometry(origin);
   auto positive = [&](double v, const char* what) {
     if (!(std::isfinite(v) && v > 0.0))
-      fail(urdf_path, "link " + in_quotes(link) + ": " + what + " must be > 0, got " +
-                          std::to_string(v));
+      fail(urdf_path,
+           "link " + in_quotes(link) + ": " + what + " must be > 0, got " + std::to_string(v));
   };
   switch (g->type) {
     case urdf::Geometry::BOX: {
@@ -265,9 +264,9 @@ bool substitute_inertial_if_needed(Link& link, bool declared) {
   const bool inertia_ok = mass_ok && plausible_inertia(in, has_geometry ? size.norm() : 0.0);
   if (mass_ok && inertia_ok && in.com_m.allFinite()) return false;
 
-  const Eigen::Vector3d box_size =
-      has_geometry ? size.cwiseMax(Eigen::Vector3d::Constant(1e-3)).eval()
-                   : Eigen::Vector3d::Constant(kFrameCubeSide_m);
+  const Eigen::Vector3d box_size = has_geometry
+                                       ? size.cwiseMax(Eigen::Vector3d::Constant(1e-3)).eval()
+                                       : Eigen::Vector3d::Constant(kFrameCubeSide_m);
   const Eigen::Vector3d center =
       has_geometry ? (0.5 * (box.min + box.max)).eval() : Eigen::Vector3d::Zero();
   if (!mass_ok) {
@@ -294,9 +293,10 @@ void warn_substituted_once(const std::string& urdf_path, const std::vector<std::
   std::lock_guard<std::mutex> lock(mutex);
   if (!warned.insert(urdf_path).second) return;
   std::ostringstream msg;
-  msg << "cordgrasp: warning: " << in_quotes(urdf_path) << ": missing, placeholder or impossible inertials on "
-      << names.size() << " link(s), replaced by solid boxes of their geometry bounds ("
-      << kSubstituteDensity_kgm3 << " kg/m^3 unless the declared mass is plausible): ";
+  msg << "cordgrasp: warning: " << in_quotes(urdf_path)
+      << ": missing, placeholder or impossible inertials on " << names.size()
+      << " link(s), replaced by solid boxes of their geometry bounds (" << kSubstituteDensity_kgm3
+      << " kg/m^3 unless the declared mass is plausible): ";
   for (size_t i = 0; i < names.size(); ++i) msg << (i ? ", " : "") << in_quotes(names[i]);
   std::cerr << msg.str() << '\n';
 }
@@ -335,7 +335,8 @@ std::vector<std::string> load_urdf_into(HandModel& hand, const std::string& urdf
     link.name = ul.name;
     link.parent_joint = parent_joint;
     for (const auto& c : ul.collision_array)
-      link.collisions.push_back(convert_geometry(c->geometry, c->origin, urdf_path, ul.name, cache));
+      link.collisions.push_back(
+          convert_geometry(c->geometry, c->origin, urdf_path, ul.name, cache));
     for (const auto& v : ul.visual_array) {
       Geometry g = convert_geometry(v->geometry, v->origin, urdf_path, ul.name, cache);
       g.rgba = material_rgba(*v, *model);
@@ -433,8 +434,8 @@ std::vector<std::string> load_urdf_into(HandModel& hand, const std::string& urdf
     const int j = find_joint(hand, joint_name);
     const int m = find_joint(hand, master_name);
     if (m < 0)
-      fail(urdf_path, "joint " + in_quotes(joint_name) + " mimics unknown joint " +
-                          in_quotes(master_name));
+      fail(urdf_path,
+           "joint " + in_quotes(joint_name) + " mimics unknown joint " + in_quotes(master_name));
     if (!hand.joints[m].is_moving() || m == j)
       fail(urdf_path, "joint " + in_quotes(joint_name) + " mimics " + in_quotes(master_name) +
                           ", which is fixed or itself");
@@ -468,8 +469,8 @@ class Description {
                       std::to_string(e.mark.column + 1) + ": " + e.msg);
     }
     if (!root_.IsMap()) fail(path_, "hand description must be a YAML mapping (key: value)");
-    static const std::set<std::string> kKeys = {"format",  "name",         "urdf",
-                                                "gcp",     "preshape",     "actors",
+    static const std::set<std::string> kKeys = {"format",    "name",        "urdf",
+                                                "gcp",       "preshape",    "actors",
                                                 "couplings", "thumb_links", "palm_width_m"};
     for (const auto& kv : root_) {
       const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
@@ -536,7 +537,8 @@ void read_gcp(HandModel& hand, const Description& d) {
   d.require_map(gcp, "gcp");
   const std::string link = d.text(gcp["link"], "gcp.link");
   hand.gcp.link = find_link(hand, link);
-  if (hand.gcp.link < 0) d.error(gcp["link"], "GCP link " + in_quotes(link) + " not found in the URDF");
+  if (hand.gcp.link < 0)
+    d.error(gcp["link"], "GCP link " + in_quotes(link) + " not found in the URDF");
   hand.gcp.X_LG = from_xyz_rpy(d.vec3(gcp["xyz"], "gcp.xyz"), d.vec3(gcp["rpy"], "gcp.rpy"));
   for (const auto& kv : gcp) {
     const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
@@ -553,7 +555,8 @@ void read_couplings(HandModel& hand, const Description& d) {
     d.require_map(c, "a coupling");
     const int j = moving_joint(hand, d, c["joint"], "coupling joint");
     const int m = moving_joint(hand, d, c["master"], "coupling master");
-    if (j == m) d.error(c["joint"], "coupling of joint " + in_quotes(hand.joints[j].name) + " to itself");
+    if (j == m)
+      d.error(c["joint"], "coupling of joint " + in_quotes(hand.joints[j].name) + " to itself");
     if (hand.joints[j].mimic)
       d.error(c["joint"], "joint " + in_quotes(hand.joints[j].name) + " is already coupled");
     Mimic mimic;
@@ -578,14 +581,15 @@ void read_preshape(HandModel& hand, const Description& d) {
       const int j = moving_joint(hand, d, kv.first, "preshape");
       const Joint& joint = hand.joints[j];
       if (joint.mimic)
-        d.error(kv.first, "preshape sets " + in_quotes(joint.name) + ", a coupled joint following " +
+        d.error(kv.first, "preshape sets " + in_quotes(joint.name) +
+                              ", a coupled joint following " +
                               in_quotes(hand.joints[joint.mimic->master_joint].name) +
                               "; set the master instead");
       const double v = d.number(kv.second, "preshape value of " + in_quotes(joint.name));
       if (v < joint.lower - kLimitTol || v > joint.upper + kLimitTol) {
         std::ostringstream s;
-        s << "preshape value " << v << " of joint " << in_quotes(joint.name) << " is outside its limits ["
-          << joint.lower << ", " << joint.upper << "]";
+        s << "preshape value " << v << " of joint " << in_quotes(joint.name)
+          << " is outside its limits [" << joint.lower << ", " << joint.upper << "]";
         d.error(kv.second, s.str());
       }
       q[j] = v;
@@ -604,14 +608,16 @@ void read_actors(HandModel& hand, const Description& d) {
     d.require_map(a, "an actor");
     Actor actor;
     actor.name = d.text(a["name"], "actor name");
-    if (!names.insert(actor.name).second) d.error(a["name"], "duplicate actor " + in_quotes(actor.name));
+    if (!names.insert(actor.name).second)
+      d.error(a["name"], "duplicate actor " + in_quotes(actor.name));
     const YAML::Node joints = a["joints"];
     if (!joints || !joints.IsMap() || joints.size() == 0)
       d.error(a, "actor " + in_quotes(actor.name) + " needs 'joints: {joint: speed, ...}'");
     for (const auto& kv : joints) {
       const int j = moving_joint(hand, d, kv.first, "actor " + in_quotes(actor.name));
       if (hand.joints[j].mimic)
-        d.error(kv.first, "actor " + in_quotes(actor.name) + " lists " + in_quotes(hand.joints[j].name) +
+        d.error(kv.first, "actor " + in_quotes(actor.name) + " lists " +
+                              in_quotes(hand.joints[j].name) +
                               ", a coupled joint; list its master only");
       if (!used.insert(j).second)
         d.error(kv.first, "joint " + in_quotes(hand.joints[j].name) + " is in two actors");
@@ -680,13 +686,15 @@ std::string resolve_hand_path(const std::string& name_or_path) {
     return given.string();
   }
   const fs::path dir = shipped_hands_dir();
-  for (const fs::path& p : {dir / (name_or_path + ".yaml"), dir / name_or_path / (name_or_path + ".yaml")})
+  for (const fs::path& p :
+       {dir / (name_or_path + ".yaml"), dir / name_or_path / (name_or_path + ".yaml")})
     if (fs::is_regular_file(p)) return p.lexically_normal().string();
   std::vector<std::string> names;
   if (fs::is_directory(dir))
     for (const auto& e : fs::directory_iterator(dir)) {
       if (e.path().extension() == ".yaml") names.push_back(e.path().stem().string());
-      if (e.is_directory() && fs::is_regular_file(e.path() / (e.path().filename().string() + ".yaml")))
+      if (e.is_directory() &&
+          fs::is_regular_file(e.path() / (e.path().filename().string() + ".yaml")))
         names.push_back(e.path().filename().string());
     }
   std::sort(names.begin(), names.end());
@@ -705,8 +713,8 @@ HandModel load_hand(const std::string& name_or_path) {
 
   HandModel hand;
   hand.description_path = desc_path;
-  hand.name = d.root()["name"] ? d.text(d.root()["name"], "name")
-                               : fs::path(desc_path).stem().string();
+  hand.name =
+      d.root()["name"] ? d.text(d.root()["name"], "name") : fs::path(desc_path).stem().string();
   const YAML::Node urdf = d.root()["urdf"];
   if (!urdf) fail(desc_path, "missing 'urdf' (path of the hand's URDF, relative to this file)");
   const std::string urdf_text = d.text(urdf, "urdf");

@@ -91,7 +91,8 @@ TEST(InfoHand, BadHandFilesExitNonZeroWithTheLoaderMessage) {
       {"millimetres.yaml", "millimetres"},
   };
   for (const auto& [file, message] : cases) {
-    const auto r = run_cordgrasp("info --hand \"" + test_data(std::string("hands/bad/") + file) + "\"");
+    const auto r =
+        run_cordgrasp("info --hand \"" + test_data(std::string("hands/bad/") + file) + "\"");
     EXPECT_NE(r.exit_code, 0) << file;
     EXPECT_NE(r.output.find(message), std::string::npos) << file << ": " << r.output;
     // Names the file at fault: the description, or the URDF of the same stem beside it.
@@ -120,8 +121,8 @@ TEST(InfoHandDataset, JsonOfEveryStagedHandMatchesTheManifestJointCounts) {
   CORDGRASP_REQUIRE_SHARED_DATA();
   // ../shared/data/MANIFEST.md, column "joints".
   const ManifestCounts hands[] = {
-      {"schunk_sah", 22, 16, 0}, {"icub_right_hand", 6, 20, 0}, {"armar3_right_hand", 13, 11, 0},
-      {"allegro_right", 4, 16, 0}, {"panda_hand", 1, 0, 2},     {"barrett_bh282", 1, 8, 0},
+      {"schunk_sah", 22, 16, 0},   {"icub_right_hand", 6, 20, 0}, {"armar3_right_hand", 13, 11, 0},
+      {"allegro_right", 4, 16, 0}, {"panda_hand", 1, 0, 2},       {"barrett_bh282", 1, 8, 0},
   };
   for (const auto& m : hands) {
     SCOPED_TRACE(m.name);

@@ -23,8 +23,7 @@ inline Eigen::VectorXd advance_actor(const HandModel& hand, const Actor& actor,
 
 /// Every actor, advanced from the preshape by `step` (joint units per unit of speed), moves each
 /// of its fingertips at least `min_gain_m` closer to the GCP's z axis, and closer to the GCP.
-inline void expect_actors_close_towards_gcp(const HandModel& hand, double step,
-                                            double min_gain_m) {
+inline void expect_actors_close_towards_gcp(const HandModel& hand, double step, double min_gain_m) {
   const Eigen::VectorXd q0 = apply_couplings(hand, hand.preshape);
   const auto X0 = link_poses(hand, q0);
   const Eigen::Isometry3d X_GW = gcp_pose(hand, X0).inverse();

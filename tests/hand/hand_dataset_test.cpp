@@ -1,12 +1,11 @@
 // The third-party hands in ../shared/data/hands with their descriptions in assets/hands.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <map>
 #include <set>
 #include <string>
-
-#include <Eigen/Eigenvalues>
 
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
@@ -32,8 +31,8 @@ struct ManifestHand {
   int prismatic;
 };
 constexpr ManifestHand kManifestHands[] = {
-    {"schunk_sah", 22, 16, 0},       {"icub_right_hand", 6, 20, 0}, {"armar3_right_hand", 13, 11, 0},
-    {"allegro_right", 4, 16, 0},     {"panda_hand", 1, 0, 2},       {"barrett_bh282", 1, 8, 0},
+    {"schunk_sah", 22, 16, 0},   {"icub_right_hand", 6, 20, 0}, {"armar3_right_hand", 13, 11, 0},
+    {"allegro_right", 4, 16, 0}, {"panda_hand", 1, 0, 2},       {"barrett_bh282", 1, 8, 0},
 };
 
 TEST(HandDataset, EveryStagedHandHasADescriptionAndLoadsWithManifestJointCounts) {
@@ -59,7 +58,8 @@ TEST(HandDataset, EveryStagedHandHasADescriptionAndLoadsWithManifestJointCounts)
 
 TEST(HandDataset, GcpPointsFromThePalmIntoTheGraspOnEveryHand) {
   CORDGRASP_REQUIRE_SHARED_DATA();
-  for (const ManifestHand& m : kManifestHands) test::expect_gcp_points_into_grasp(load_hand(m.name));
+  for (const ManifestHand& m : kManifestHands)
+    test::expect_gcp_points_into_grasp(load_hand(m.name));
 }
 
 TEST(HandDataset, PositiveActorMotionClosesEveryFingerTowardsTheGcpAxis) {
@@ -95,7 +95,9 @@ TEST(HandDataset, SahFingerPoseAgreesWithComposedUrdfOrigins) {
                            Eigen::AngleAxisd(p, Eigen::Vector3d::UnitY()) *
                            Eigen::AngleAxisd(r, Eigen::Vector3d::UnitX()));
   };
-  auto rz = [](double a) { return Eigen::Matrix3d(Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ())); };
+  auto rz = [](double a) {
+    return Eigen::Matrix3d(Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()));
+  };
   Eigen::Isometry3d X_expected = Eigen::Isometry3d::Identity();
   X_expected.translate(Eigen::Vector3d(-0.003, 0.04025, 0.15584));
   X_expected.rotate(rpy(0, -1.57079633, -3.10611011) * rz(q_base));
@@ -156,8 +158,8 @@ TEST(HandDataset, OnlyMissingOrPlaceholderInertialsAreSubstituted) {
   EXPECT_EQ(substituted(load_hand("panda_hand")), std::set<std::string>{"panda_hand_tcp"});
   const HandModel icub = load_hand("icub_right_hand");
   const auto s = substituted(icub);
-  EXPECT_TRUE(s.count("r_hand_index_tip"));     // no <inertial>
-  EXPECT_TRUE(s.count("r_hand_index_1"));       // 10 g with I = 1e-3 kg m^2
+  EXPECT_TRUE(s.count("r_hand_index_tip"));  // no <inertial>
+  EXPECT_TRUE(s.count("r_hand_index_1"));    // 10 g with I = 1e-3 kg m^2
   EXPECT_DOUBLE_EQ(icub.links[find_link(icub, "r_hand_index_1")].inertial.mass_kg, 0.01);
   const HandModel armar = load_hand("armar3_right_hand");
   const Link& phalanx = armar.links[find_link(armar, "Index R J0_link")];  // 0.5 kg, 6x10x45 mm

@@ -1,8 +1,9 @@
 // hand_fingers: chains moved by each actor, thumb flag and fingertip.
+#include "cordgrasp/core/hand_fingers.h"
+
 #include <gtest/gtest.h>
 
 #include "cordgrasp/core/geometry_points.h"
-#include "cordgrasp/core/hand_fingers.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
 #include "test_paths.h"

@@ -1,11 +1,12 @@
 // apply_couplings, clamp_to_limits, link_poses, root_pose_for_gcp on the shipped and test hands.
+#include "cordgrasp/core/kinematics.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 
 #include "cordgrasp/core/hand_io.h"
-#include "cordgrasp/core/kinematics.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
@@ -101,7 +102,8 @@ TEST(Kinematics, RevoluteJointRotatesItsChildAboutTheAxis) {
   const Eigen::Isometry3d X_WJ = X0[joint.parent_link] * joint.X_PJ;
   // Points on the axis stay; the child frame turns by 0.5 rad about it.
   EXPECT_TRUE(X1[joint.child_link].translation().isApprox(X0[joint.child_link].translation()));
-  const Eigen::Matrix3d dR = X1[joint.child_link].linear() * X0[joint.child_link].linear().transpose();
+  const Eigen::Matrix3d dR =
+      X1[joint.child_link].linear() * X0[joint.child_link].linear().transpose();
   const Eigen::AngleAxisd aa(dR);
   EXPECT_NEAR(aa.angle(), 0.5, 1e-12);
   EXPECT_TRUE(aa.axis().isApprox(X_WJ.linear() * joint.axis, 1e-9));

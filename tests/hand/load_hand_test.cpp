@@ -8,10 +8,10 @@
 #include <string>
 
 #include "cordgrasp/core/error.h"
-#include "cordgrasp/core/hand_io.h"
-#include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/geometry_points.h"
 #include "cordgrasp/core/hand_fingers.h"
+#include "cordgrasp/core/hand_io.h"
+#include "cordgrasp/core/kinematics.h"
 #include "hand_checks.h"
 #include "test_paths.h"
 
@@ -58,7 +58,8 @@ TEST(LoadHand, TwoLinkChainForwardKinematicsMatchesHandComputation) {
   const HandModel h = load_hand(test_data("hands/two_link/two_link.yaml"));
   const int shoulder = find_joint(h, "shoulder");
   const int elbow = find_joint(h, "elbow");
-  for (const auto& [q1, q2] : {std::pair{0.0, 0.0}, {0.7, -1.1}, {-1.2, 1.9}, {M_PI / 2, -M_PI / 2}}) {
+  for (const auto& [q1, q2] :
+       {std::pair{0.0, 0.0}, {0.7, -1.1}, {-1.2, 1.9}, {M_PI / 2, -M_PI / 2}}) {
     Eigen::VectorXd q = Eigen::VectorXd::Zero(3);
     q[shoulder] = q1;
     q[elbow] = q2;
@@ -146,9 +147,9 @@ TEST(LoadHand, ReadsGeometryMaterialsAndSharesScaledMeshes) {
   EXPECT_TRUE(fs::path(col.mesh_path).is_absolute() || fs::exists(col.mesh_path));
   double max_coord = 0.0;
   for (const auto& v : col.mesh->vertices) max_coord = std::max(max_coord, v.maxCoeff());
-  EXPECT_NEAR(max_coord, 0.05, kMeshTol_m);  // scale 0.5 applied
-  EXPECT_EQ(slider.visuals[0].mesh, col.mesh);         // same file and scale: shared
-  EXPECT_NE(slider.visuals[1].mesh, col.mesh);         // same file, scale 1: its own copy
+  EXPECT_NEAR(max_coord, 0.05, kMeshTol_m);     // scale 0.5 applied
+  EXPECT_EQ(slider.visuals[0].mesh, col.mesh);  // same file and scale: shared
+  EXPECT_NE(slider.visuals[1].mesh, col.mesh);  // same file, scale 1: its own copy
   EXPECT_TRUE(slider.visuals[0].rgba.isApprox(Eigen::Vector4d(0.7, 0.7, 0.7, 1.0)));
 }
 
@@ -195,8 +196,8 @@ TEST(LoadHand, PalmWidthOverrideAndThumbLinksAreRead) {
   EXPECT_DOUBLE_EQ(*h.palm_width_m, 0.07);
   ASSERT_EQ(h.thumb_links.size(), 1u);
   EXPECT_EQ(h.thumb_links[0], find_link(h, "slider"));
-  EXPECT_TRUE(gcp_pose(h, link_poses(h, h.preshape)).translation().isApprox(
-      Eigen::Vector3d(0, 0, 0.05)));
+  EXPECT_TRUE(
+      gcp_pose(h, link_poses(h, h.preshape)).translation().isApprox(Eigen::Vector3d(0, 0, 0.05)));
 }
 
 // --- bad input ---------------------------------------------------------------------------------
@@ -284,9 +285,11 @@ TEST(ResolveHandPath, RejectsAUrdfWithAHint) {
 }
 
 TEST(ResolveHandPath, AssetsDirectoryCanBeOverriddenByEnvironment) {
-  const fs::path dir = fs::temp_directory_path() / ("cordgrasp_assets_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("cordgrasp_assets_" + std::to_string(::getpid()));
   fs::create_directories(dir / "hands" / "mine");
-  fs::copy_file(test_data("hands/two_link/two_link.urdf"), dir / "hands" / "mine" / "two_link.urdf");
+  fs::copy_file(test_data("hands/two_link/two_link.urdf"),
+                dir / "hands" / "mine" / "two_link.urdf");
   fs::copy_file(test_data("hands/two_link/two_link.yaml"), dir / "hands" / "mine" / "mine.yaml");
   ::setenv("CORDGRASP_ASSETS_DIR", dir.c_str(), 1);
   EXPECT_EQ(shipped_hands_dir(), (dir / "hands").string());

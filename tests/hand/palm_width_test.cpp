@@ -1,10 +1,11 @@
 // measure_palm_width / palm_width (spec §4 item 6).
+#include "cordgrasp/core/palm_width.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "cordgrasp/core/hand_io.h"
-#include "cordgrasp/core/palm_width.h"
 #include "test_paths.h"
 
 namespace cordgrasp {

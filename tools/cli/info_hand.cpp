@@ -16,20 +16,28 @@ namespace {
 
 const char* type_name(JointType t) {
   switch (t) {
-    case JointType::kFixed: return "fixed";
-    case JointType::kRevolute: return "revolute";
-    case JointType::kContinuous: return "continuous";
-    case JointType::kPrismatic: return "prismatic";
+    case JointType::kFixed:
+      return "fixed";
+    case JointType::kRevolute:
+      return "revolute";
+    case JointType::kContinuous:
+      return "continuous";
+    case JointType::kPrismatic:
+      return "prismatic";
   }
   return "?";
 }
 
 const char* kind_name(Geometry::Kind k) {
   switch (k) {
-    case Geometry::Kind::kBox: return "box";
-    case Geometry::Kind::kCylinder: return "cylinder";
-    case Geometry::Kind::kSphere: return "sphere";
-    case Geometry::Kind::kMesh: return "mesh";
+    case Geometry::Kind::kBox:
+      return "box";
+    case Geometry::Kind::kCylinder:
+      return "cylinder";
+    case Geometry::Kind::kSphere:
+      return "sphere";
+    case Geometry::Kind::kMesh:
+      return "mesh";
   }
   return "?";
 }
