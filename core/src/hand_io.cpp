@@ -310,12 +310,12 @@ Eigen::Vector4d material_rgba(const urdf::Visual& vis, const urdf::ModelInterfac
   const auto& c = vis.material->color;
   // urdfdom leaves a name-only reference black (0,0,0,1); resolve it against global materials.
   const bool name_only = c.r == 0.0f && c.g == 0.0f && c.b == 0.0f && c.a == 1.0f;
-  if (name_only && !vis.material_name.empty()) {
-    const auto global = model.getMaterial(vis.material_name);
-    if (global) {
-      const auto& gc = global->color;
-      return Eigen::Vector4d(gc.r, gc.g, gc.b, gc.a);
-    }
+  if (name_only) {
+    const auto global =
+        vis.material_name.empty() ? nullptr : model.getMaterial(vis.material_name);
+    if (!global) return kDefault;  // e.g. a texture-only material
+    const auto& gc = global->color;
+    return Eigen::Vector4d(gc.r, gc.g, gc.b, gc.a);
   }
   return Eigen::Vector4d(c.r, c.g, c.b, c.a);
 }
@@ -684,6 +684,10 @@ std::string resolve_hand_path(const std::string& name_or_path) {
       throw InputError("--hand " + in_quotes(name_or_path) +
                        ": this is a URDF; pass the hand description (YAML) that names it");
     return given.string();
+  }
+  if (fs::is_directory(given)) {  // a hand folder: <dir>/<dir name>.yaml
+    const fs::path inside = given / (given.lexically_normal().filename().string() + ".yaml");
+    if (fs::is_regular_file(inside)) return inside.string();
   }
   const fs::path dir = shipped_hands_dir();
   for (const fs::path& p :

@@ -267,6 +267,7 @@ TEST(ResolveHandPath, FindsShippedHandsByNameInFileOrFolderLayout) {
   EXPECT_EQ(fs::path(resolve_hand_path("schunk_sah")).filename(), "schunk_sah.yaml");
   const std::string file = test_data("hands/two_link/two_link.yaml");
   EXPECT_EQ(resolve_hand_path(file), file);
+  EXPECT_EQ(fs::path(resolve_hand_path(test_data("hands/two_link"))), fs::path(file));
 }
 
 TEST(ResolveHandPath, UnknownNameListsShippedHands) {
