@@ -56,13 +56,29 @@ TEST(HandDataset, EveryStagedHandHasADescriptionAndLoadsWithManifestJointCounts)
   }
 }
 
+TEST(HandDataset, EveryDescriptionShippedInAssetsLoads) {
+  CORDGRASP_REQUIRE_SHARED_DATA();  // some descriptions name URDFs in ../shared/data
+  const std::string dir = shipped_hands_dir();
+  std::vector<std::string> files = test::files_in(dir, ".yaml");
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    if (e.is_directory())
+      for (const auto& f : test::files_in(e.path().string(), ".yaml")) files.push_back(f);
+  EXPECT_GE(files.size(), 8u);
+  for (const auto& f : files) {
+    SCOPED_TRACE(f);
+    const HandModel h = load_hand(f);
+    test::expect_gcp_points_into_grasp(h);
+    test::expect_actors_close_towards_gcp(h, kClosingStep, kMinClosing_m);
+  }
+}
+
 TEST(HandDataset, GcpPointsFromThePalmIntoTheGraspOnEveryHand) {
   CORDGRASP_REQUIRE_SHARED_DATA();
   for (const ManifestHand& m : kManifestHands)
     test::expect_gcp_points_into_grasp(load_hand(m.name));
 }
 
-TEST(HandDataset, PositiveActorMotionClosesEveryFingerTowardsTheGcpAxis) {
+TEST(HandDataset, PositiveActorMotionClosesEveryFingerTowardsTheGcp) {
   CORDGRASP_REQUIRE_SHARED_DATA();
   for (const ManifestHand& m : kManifestHands)
     test::expect_actors_close_towards_gcp(load_hand(m.name), kClosingStep, kMinClosing_m);
