@@ -25,8 +25,21 @@ Eigen::Isometry3d translation(double x, double y, double z) {
   return X;
 }
 
-/// Rounds coordinates to the 0.1 µm grid (and −0 to +0) so the OBJ text is short; names it.
+/// Drops unreferenced vertices, rounds coordinates to the 0.1 µm grid (and −0 to +0) so the OBJ
+/// text is short, and names the mesh.
 Mesh finish(Mesh m, const std::string& name) {
+  std::vector<int> remap(m.vertices.size(), -1);
+  for (const auto& t : m.triangles)
+    for (int k = 0; k < 3; ++k) remap[t[k]] = 0;
+  std::vector<Eigen::Vector3d> kept;
+  for (size_t i = 0; i < m.vertices.size(); ++i)
+    if (remap[i] == 0) {
+      remap[i] = int(kept.size());
+      kept.push_back(m.vertices[i]);
+    }
+  for (auto& t : m.triangles)
+    for (int k = 0; k < 3; ++k) t[k] = remap[t[k]];
+  m.vertices = std::move(kept);
   for (auto& v : m.vertices)
     for (int k = 0; k < 3; ++k) v[k] = std::round(v[k] * kGridPerMeter) / kGridPerMeter + 0.0;
   m.name = name;
