@@ -64,10 +64,13 @@ struct SoupBuilder {
         Eigen::Vector3d p[3];
         bool finite = true;
         for (int k = 0; k < 3; ++k) {
-          const aiVector3D q = X * am.mVertices[face.mIndices[k]];
+          const aiVector3D& raw = am.mVertices[face.mIndices[k]];
+          const aiVector3D q = X * raw;
           p[k] = Eigen::Vector3d(q.x, q.y, q.z);
           if (finite && !p[k].allFinite()) {
-            if (non_finite_triangles == 0) first_non_finite = p[k];
+            // Report the file's coordinates (a transform would smear one NaN over x, y, z).
+            const Eigen::Vector3d file_p(raw.x, raw.y, raw.z);
+            if (non_finite_triangles == 0) first_non_finite = file_p.allFinite() ? p[k] : file_p;
             finite = false;
           }
         }
