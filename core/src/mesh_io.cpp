@@ -1,11 +1,11 @@
 #include "cordgrasp/core/mesh_io.h"
 
-#include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <assimp/Importer.hpp>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -158,8 +158,8 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   }
   rep.degenerate_dropped = int(mesh.triangles.size() - kept.size());
   if (kept.empty())
-    fail(path, "all " + std::to_string(mesh.triangles.size()) +
-                   " triangles are degenerate (zero area)");
+    fail(path,
+         "all " + std::to_string(mesh.triangles.size()) + " triangles are degenerate (zero area)");
   mesh.triangles = std::move(kept);
 
   // Compact: keep only referenced vertices, in first-use order.

@@ -82,7 +82,8 @@ std::vector<Eigen::Vector3d> handle_path(double x_wall, double x_far, double x_i
 
 Mesh make_box_object(const BoxObjectParams& p) {
   Mesh m;
-  append_mesh(m, make_grid_box_mesh(p.size_m, p.max_cell_m), translation(0, 0, 0.5 * p.size_m.z()));
+  const Mesh box = make_grid_box_mesh(p.size_m, p.max_cell_m);
+  append_mesh(m, box, translation(0, 0, 0.5 * p.size_m.z()));
   return finish(m, "box");
 }
 
@@ -125,8 +126,8 @@ Mesh make_mug_object(const MugObjectParams& p) {
   profile.emplace_back(0.0, p.bottom_m);
   Mesh m = make_revolved_mesh(profile, kRevolveSegments);
   // Handle: its end caps sit inside the wall (between r_in and r), so nothing pokes inside.
-  const auto path = handle_path(r, r + p.handle_reach_m, r - 0.75 * p.wall_m, 0.82 * h,
-                                0.27 * h, 24);
+  const auto path =
+      handle_path(r, r + p.handle_reach_m, r - 0.75 * p.wall_m, 0.82 * h, 0.27 * h, 24);
   append_mesh(m, make_swept_tube_mesh(path, p.handle_radius_m, kTubeSegments));
   return finish(m, "mug");
 }
@@ -135,8 +136,8 @@ Mesh make_wine_glass_object(const WineGlassObjectParams& p) {
   // Nominal glass: bowl radius 0.042 m, height 0.2 m; radii and heights scale separately.
   const double sr = 0.5 * p.bowl_diameter_m / 0.042, sz = p.height_m / 0.2;
   const double zc = 0.14, a_out = 0.042, b_out = 0.048, a_in = 0.040, b_in = 0.046;
-  std::vector<Eigen::Vector2d> nominal{{0.0, 0.0},      {0.035, 0.0},   {0.035, 0.003},
-                                       {0.02, 0.005},   {0.01, 0.008},  {0.005, 0.013}};
+  std::vector<Eigen::Vector2d> nominal{{0.0, 0.0},    {0.035, 0.0},  {0.035, 0.003},
+                                       {0.02, 0.005}, {0.01, 0.008}, {0.005, 0.013}};
   append_points(nominal, densify_polyline({{0.004, 0.02}, {0.004, 0.09}}, 0.02));
   // Outer bowl: lower half-ellipse from the stem to the widest point, then a tulip to the rim.
   append_points(nominal, arc(0.0, zc, a_out, b_out, -std::acos(0.006 / a_out), 0.0, 8));
@@ -198,8 +199,14 @@ Mesh make_kettle_object(const KettleObjectParams& p) {
   const double sr = 0.5 * p.base_diameter_m / 0.06, sz = p.height_m / 0.155;
   std::vector<Eigen::Vector2d> nominal{{0.0, 0.0}, {0.056, 0.0}};
   append_points(nominal, densify_polyline({{0.06, 0.004}, {0.047, 0.122}}, kMaxStep_m));
-  nominal.insert(nominal.end(), {{0.044, 0.128}, {0.04, 0.131}, {0.03, 0.135}, {0.018, 0.138},
-                                 {0.012, 0.139}, {0.012, 0.15}, {0.009, 0.155}, {0.0, 0.155}});
+  nominal.insert(nominal.end(), {{0.044, 0.128},
+                                 {0.04, 0.131},
+                                 {0.03, 0.135},
+                                 {0.018, 0.138},
+                                 {0.012, 0.139},
+                                 {0.012, 0.15},
+                                 {0.009, 0.155},
+                                 {0.0, 0.155}});
   std::vector<Eigen::Vector2d> profile;
   for (const auto& q : nominal) profile.emplace_back(sr * q.x(), sz * q.y());
   Mesh m = make_revolved_mesh(profile, kRevolveSegments);

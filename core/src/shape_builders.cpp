@@ -101,7 +101,10 @@ Mesh make_swept_tube_mesh(const std::vector<Eigen::Vector3d>& path_m, double rad
 Mesh make_grid_box_mesh(const Eigen::Vector3d& size_m, double max_cell_m) {
   if (!(max_cell_m > 0.0)) throw std::invalid_argument("make_grid_box_mesh: max_cell_m <= 0");
   std::array<int, 3> cells;
-  for (int a = 0; a < 3; ++a) cells[a] = std::max(1, int(std::ceil(size_m[a] / max_cell_m - 1e-9)));
+  for (int a = 0; a < 3; ++a) {
+    const double n = std::ceil(size_m[a] / max_cell_m - 1e-9);  // tolerate rounding of exact fits
+    cells[a] = std::max(1, int(n));
+  }
   Mesh m;
   m.name = "box";
   std::map<std::array<int, 3>, int> index_of;  // lattice point → vertex

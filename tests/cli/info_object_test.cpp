@@ -55,7 +55,8 @@ TEST(CliInfoObject, AutoUnitsPickMillimetersAndSaySo) {
 
 TEST(CliInfoObject, MillimeterUnitsScaleAndMetersDoNot) {
   const std::string path = quoted(test::test_data("meshes/box_100mm.obj"));
-  const test::CommandResult mm = test::run_cordgrasp("info --object " + path + " --units mm --json");
+  const test::CommandResult mm =
+      test::run_cordgrasp("info --object " + path + " --units mm --json");
   ASSERT_EQ(mm.exit_code, 0) << mm.output;
   const auto j = nlohmann::json::parse(mm.output);
   EXPECT_FALSE(j["units_auto_chose_mm"].get<bool>());
@@ -103,8 +104,9 @@ TEST(CliInfoObject, OpenDefectiveMeshHasNoVolumeButAHull) {
 }
 
 TEST(CliInfoObject, EveryFormatFileGivesValidJson) {
-  for (const std::string file : {"box.obj", "box_ascii.stl", "box_binary.stl", "box.ply",
-                                 "box.off", "box_zup.dae", "box.gltf"}) {
+  const std::vector<std::string> files{"box.obj", "box_ascii.stl", "box_binary.stl", "box.ply",
+                                       "box.off", "box_zup.dae",   "box.gltf"};
+  for (const std::string& file : files) {
     SCOPED_TRACE(file);
     const test::CommandResult r = test::run_cordgrasp(
         "info --json --object " + quoted(test::test_data("meshes/formats/" + file)));

@@ -2,7 +2,6 @@
 // Reads the object rows of ../shared/data/MANIFEST.md (triangle counts, bbox, topology as
 // measured with assimp when the data was staged), for dataset tests.
 #include <Eigen/Core>
-
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -16,8 +15,8 @@ namespace cordgrasp::test {
 /// One row of the MANIFEST's objects table.
 struct ManifestObject {
   std::string name;
-  std::string file;           ///< relative to the shared data folder, e.g. objects/kit/Dog.obj
-  int triangles = 0;          ///< as counted by `assimp info`
+  std::string file;   ///< relative to the shared data folder, e.g. objects/kit/Dog.obj
+  int triangles = 0;  ///< as counted by `assimp info`
   Eigen::Vector3d size_m = Eigen::Vector3d::Zero();  ///< bbox extents, rounded to 1 mm
   bool watertight = false;
   int boundary_edges = 0;
@@ -46,8 +45,8 @@ inline std::vector<ManifestObject> manifest_objects() {
   if (shared_data_dir().empty()) return out;
   std::ifstream in(shared_data_dir() + "/MANIFEST.md");
   const std::regex watertight(R"(watertight, (\d+) component\(s\), Euler char\. (-?\d+))");
-  const std::regex open(
-      R"(open: (\d+) boundary / (\d+) non-manifold edges, (\d+) component\(s\), Euler char\. (-?\d+))");
+  const std::regex open(R"(open: (\d+) boundary / (\d+) non-manifold edges, )"
+                        R"((\d+) component\(s\), Euler char\. (-?\d+))");
   const std::regex bbox(R"(([\d.]+) x ([\d.]+) x ([\d.]+))");
   std::string line;
   while (std::getline(in, line)) {

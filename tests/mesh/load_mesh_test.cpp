@@ -140,8 +140,10 @@ TEST(LoadMesh, EveryFormatLoadsTheSameOrientedBox) {
   std::vector<std::array<int, 3>> want;
   for (const auto& t : ref.triangles) want.push_back(canonical({t[0], t[1], t[2]}));
   std::sort(want.begin(), want.end());
-  for (const std::string file : {"box.obj", "box_ascii.stl", "box_binary.stl", "box.ply",
-                                 "box.off", "box_zup.dae", "box_zup_unit_mm.dae", "box.gltf"}) {
+  const std::vector<std::string> files{
+      "box.obj", "box_ascii.stl", "box_binary.stl",      "box.ply",
+      "box.off", "box_zup.dae",   "box_zup_unit_mm.dae", "box.gltf"};
+  for (const std::string& file : files) {
     SCOPED_TRACE(file);
     MeshLoadReport report;
     const Mesh m = load_mesh(test::test_data("meshes/formats/" + file), {}, &report);

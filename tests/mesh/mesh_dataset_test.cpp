@@ -48,7 +48,7 @@ TEST(MeshDataset, EveryObjectLoadsWithTheManifestTriangleCountsAndTopology) {
     const Mesh m = load_mesh(test::shared_data_dir() + "/" + o.file, {}, &report);
     dropped_total += report.degenerate_dropped;
     if (report.degenerate_dropped > 0)
-      std::cout << o.file << ": " << report.degenerate_dropped << " degenerate triangles dropped\n";
+      std::cout << o.file << ": " << report.degenerate_dropped << " degenerate dropped\n";
     EXPECT_EQ(int(m.triangles.size()) + report.degenerate_dropped, o.triangles);
     EXPECT_LT((mesh_bounds(m).size() - o.size_m).cwiseAbs().maxCoeff(), kManifestSizeTol_m);
     const MeshTopology t = mesh_topology(m);

@@ -1,6 +1,7 @@
+#include "cordgrasp/core/mesh_topology.h"
+
 #include <gtest/gtest.h>
 
-#include "cordgrasp/core/mesh_topology.h"
 #include "cordgrasp/core/shape_builders.h"
 #include "cordgrasp/core/shapes.h"
 

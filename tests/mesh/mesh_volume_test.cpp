@@ -1,10 +1,11 @@
+#include "cordgrasp/core/mesh_volume.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
 #include "cordgrasp/core/convex_hull_volume.h"
-#include "cordgrasp/core/mesh_volume.h"
 #include "cordgrasp/core/orient_triangles.h"
 #include "cordgrasp/core/shape_builders.h"
 #include "cordgrasp/core/shapes.h"
@@ -167,10 +168,10 @@ TEST(ConvexHullVolume, TetrahedronOfRandomPointsMatchesDeterminant) {
     Mesh m;
     for (int k = 0; k < 4; ++k) m.vertices.emplace_back(u(rng), u(rng), u(rng));
     m.triangles = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
-    const double expected = std::abs((m.vertices[1] - m.vertices[0])
-                                         .dot((m.vertices[2] - m.vertices[0])
-                                                  .cross(m.vertices[3] - m.vertices[0]))) /
-                            6.0;
+    const double expected =
+        std::abs((m.vertices[1] - m.vertices[0])
+                     .dot((m.vertices[2] - m.vertices[0]).cross(m.vertices[3] - m.vertices[0]))) /
+        6.0;
     const Eigen::Vector3d centroid =
         0.25 * (m.vertices[0] + m.vertices[1] + m.vertices[2] + m.vertices[3]);
     const SolidVolume hull = convex_hull_volume(m);

@@ -1,3 +1,5 @@
+#include "cordgrasp/core/object_meshes.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,15 +10,14 @@
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/mesh_topology.h"
 #include "cordgrasp/core/mesh_volume.h"
-#include "cordgrasp/core/object_meshes.h"
 #include "cordgrasp/core/orient_triangles.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
 namespace {
 
-constexpr double kSizeTol_m = 0.001;     ///< shipped sizes are stated to the millimetre
-constexpr double kFloatTol_m = 1e-8;     ///< assimp parses OBJ coordinates as float
+constexpr double kSizeTol_m = 0.001;  ///< shipped sizes are stated to the millimetre
+constexpr double kFloatTol_m = 1e-8;  ///< assimp parses OBJ coordinates as float
 constexpr int kMinTriangles = 200;
 constexpr int kMaxTriangles = 4000;
 
@@ -132,7 +133,9 @@ TEST(ObjectMeshes, SphereBarycenterAndRadiusAreExact) {
 TEST(ObjectMeshes, MugVolumeMatchesItsWallsAndHandle) {
   // Oracle from the parameters: shell = outer solid − cavity (48-gon prisms), handle ≈ tube.
   const MugObjectParams p;
-  const auto prism = [](double r, double h) { return 0.5 * 48 * r * r * std::sin(2 * M_PI / 48) * h; };
+  const auto prism = [](double r, double h) {
+    return 0.5 * 48 * r * r * std::sin(2 * M_PI / 48) * h;
+  };
   const double shell = prism(0.5 * p.outer_diameter_m, p.height_m) -
                        prism(0.5 * p.outer_diameter_m - p.wall_m, p.height_m - p.bottom_m);
   const auto v = closed_mesh_volume(make_mug_object(p));

@@ -1,3 +1,5 @@
+#include "cordgrasp/core/shape_builders.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +8,6 @@
 #include "cordgrasp/core/mesh_topology.h"
 #include "cordgrasp/core/mesh_volume.h"
 #include "cordgrasp/core/orient_triangles.h"
-#include "cordgrasp/core/shape_builders.h"
 
 namespace cordgrasp {
 namespace {
@@ -61,8 +62,7 @@ TEST(MakeRevolvedMesh, RejectsBadProfiles) {
 
 TEST(MakeSweptTubeMesh, StraightTubeIsAClosedOutwardPrism) {
   const int n = 16;
-  const Mesh m =
-      make_swept_tube_mesh({{0, 0, 0}, {0.05, 0.05, 0.05}, {0.1, 0.1, 0.1}}, 0.01, n);
+  const Mesh m = make_swept_tube_mesh({{0, 0, 0}, {0.05, 0.05, 0.05}, {0.1, 0.1, 0.1}}, 0.01, n);
   EXPECT_TRUE(mesh_topology(m).closed);
   EXPECT_NEAR(signed_volume(m), prism_volume(0.01, std::sqrt(0.03), n), 1e-15);
 }
@@ -87,7 +87,8 @@ TEST(MakeSweptTubeMesh, BentTubeVolumeFollowsPappus) {
 
 TEST(MakeSweptTubeMesh, TaperedTubeIsAFrustum) {
   const int n = 24;
-  const Mesh m = make_swept_tube_mesh({{0, 0, 0}, {0, 0, 0.1}}, std::vector<double>{0.02, 0.01}, n);
+  const std::vector<double> radii{0.02, 0.01};
+  const Mesh m = make_swept_tube_mesh({{0, 0, 0}, {0, 0, 0.1}}, radii, n);
   // Frustum of regular n-gons: h/3 (A1 + A2 + sqrt(A1 A2)).
   const double a1 = prism_volume(0.02, 1, n), a2 = prism_volume(0.01, 1, n);
   EXPECT_NEAR(signed_volume(m), 0.1 / 3 * (a1 + a2 + std::sqrt(a1 * a2)), 1e-15);

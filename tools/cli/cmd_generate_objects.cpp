@@ -34,8 +34,7 @@ void run_generate_objects(const GenerateObjectsOptions& opt) {
     const Eigen::Vector3d size = mesh_bounds(mesh).size();
     std::cout << std::left << std::setw(14) << name << std::right << std::setw(6)
               << mesh.triangles.size() << " triangles  " << std::fixed << std::setprecision(3)
-              << size.x() << " x " << size.y() << " x " << size.z() << " m  -> " << path
-              << '\n'
+              << size.x() << " x " << size.y() << " x " << size.z() << " m  -> " << path << '\n'
               << std::defaultfloat;
   }
 }
@@ -48,7 +47,7 @@ CORDGRASP_REGISTER_COMMAND(80, add_generate_objects_command);
 void add_generate_objects_command(CLI::App& app) {
   auto opt = std::make_shared<GenerateObjectsOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "generate-objects", "Write the shipped test objects (box, mug, pliers, ...) as OBJ in meters");
+      "generate-objects", "Write the shipped test objects (box, mug, pliers...) as OBJ in meters");
   cmd->add_option("--out-dir", opt->out_dir, "Directory to write <name>.obj into")->required();
   cmd->add_option("--only", opt->only, "Only these objects (default: all)")
       ->check(CLI::IsMember(shipped_object_names()));

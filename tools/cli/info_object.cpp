@@ -39,8 +39,8 @@ nlohmann::json object_info_json(const std::string& path, const std::string& unit
   j["barycenter_m"] = to_json(c);
   j["bounding_radius_m"] = bounding_radius(mesh, c);
   j["surface_area_m2"] = pa.area_m2;
-  j["principal_axes"] = {to_json(pa.axes.col(0)), to_json(pa.axes.col(1)),
-                         to_json(pa.axes.col(2))};
+  j["principal_axes"] = nlohmann::json::array();
+  for (int k = 0; k < 3; ++k) j["principal_axes"].push_back(to_json(pa.axes.col(k)));
   j["principal_variances_m2"] = to_json(pa.variances);
   j["topology"] = {{"vertices", topo.vertices},
                    {"edges", topo.edges},
@@ -51,8 +51,7 @@ nlohmann::json object_info_json(const std::string& path, const std::string& unit
                    {"euler_characteristic", topo.euler_characteristic},
                    {"closed", topo.closed}};
   j["volume_m3"] = solid ? nlohmann::json(solid->volume_m3) : nlohmann::json(nullptr);
-  j["center_of_mass_m"] =
-      solid ? to_json(solid->center_of_mass_m) : nlohmann::json(nullptr);
+  j["center_of_mass_m"] = solid ? to_json(solid->center_of_mass_m) : nlohmann::json(nullptr);
   j["convex_hull_volume_m3"] = hull.volume_m3;
   j["convex_hull_centroid_m"] = to_json(hull.center_of_mass_m);
   return j;
@@ -84,8 +83,8 @@ std::string topology_text(const nlohmann::json& t) {
 
 void print_object_info(const nlohmann::json& j) {
   std::cout << std::setprecision(4);
-  std::cout << "object     " << j["name"].get<std::string>() << "  (" << j["path"].get<std::string>()
-            << ")\n"
+  std::cout << "object     " << j["name"].get<std::string>() << "  ("
+            << j["path"].get<std::string>() << ")\n"
             << "triangles  " << j["triangles"] << "  vertices " << j["vertices"]
             << "  degenerate dropped " << j["degenerate_dropped"] << '\n';
   if (j["units_auto_chose_mm"].get<bool>())
@@ -93,9 +92,9 @@ void print_object_info(const nlohmann::json& j) {
   else if (j["scale_to_m"].get<double>() != 1.0)
     std::cout << "units      " << j["units"].get<std::string>() << " (x "
               << j["scale_to_m"].get<double>() << ")\n";
+  const std::string bounds = vec_text(j["bounds_min_m"]) + " .. " + vec_text(j["bounds_max_m"]);
   std::cout << "size [m]   " << vec_text(j["size_m"]) << '\n'
-            << "bounds [m] " << vec_text(j["bounds_min_m"]) << " .. "
-            << vec_text(j["bounds_max_m"]) << '\n'
+            << "bounds [m] " << bounds << '\n'
             << "C [m]      " << vec_text(j["barycenter_m"]) << "   r "
             << j["bounding_radius_m"].get<double>() << " m\n"
             << "area       " << j["surface_area_m2"].get<double>() << " m^2\n"

@@ -1,8 +1,7 @@
 #pragma once
+#include <Eigen/Core>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "cordgrasp/core/mesh.h"
 
@@ -41,14 +40,14 @@ struct BottleObjectParams {
 Mesh make_bottle_object(const BottleObjectParams& p = {});
 
 struct MugObjectParams {
-  double outer_diameter_m = 0.08;  ///< [m]
-  double height_m = 0.095;         ///< [m]
-  double wall_m = 0.004;           ///< side wall thickness [m]
-  double bottom_m = 0.006;         ///< bottom thickness [m]
-  double handle_reach_m = 0.028;   ///< handle centre line beyond the wall, along +x [m]
-  double handle_radius_m = 0.0055; ///< handle tube radius [m]
+  double outer_diameter_m = 0.08;   ///< [m]
+  double height_m = 0.095;          ///< [m]
+  double wall_m = 0.004;            ///< side wall thickness [m]
+  double bottom_m = 0.006;          ///< bottom thickness [m]
+  double handle_reach_m = 0.028;    ///< handle centre line beyond the wall, along +x [m]
+  double handle_radius_m = 0.0055;  ///< handle tube radius [m]
 };
-/// Hollow mug (closed revolved shell) plus a closed D-shaped handle tube on +x; the default object.
+/// Hollow mug (closed revolved shell) and a closed D handle tube on +x; the default object.
 Mesh make_mug_object(const MugObjectParams& p = {});
 
 struct WineGlassObjectParams {
@@ -59,17 +58,18 @@ struct WineGlassObjectParams {
 Mesh make_wine_glass_object(const WineGlassObjectParams& p = {});
 
 struct TorusObjectParams {
-  double major_radius_m = 0.04;  ///< ring radius [m]
-  double minor_radius_m = 0.012; ///< tube radius [m]
+  double major_radius_m = 0.04;   ///< ring radius [m]
+  double minor_radius_m = 0.012;  ///< tube radius [m]
 };
 /// Closed torus lying flat (axis z).
 Mesh make_torus_object(const TorusObjectParams& p = {});
 
 struct PliersObjectParams {
-  double length_m = 0.2;       ///< jaw tip to handle ends, along x [m]
-  double handle_span_m = 0.066;///< distance between the handle ends' centre lines [m]
+  double length_m = 0.2;         ///< jaw tip to handle ends, along x [m]
+  double handle_span_m = 0.066;  ///< distance between the handle ends' centre lines [m]
 };
-/// Two-handled pliers-like tool lying flat: pivot, two jaws, two handles with grips (7 closed parts).
+/// Two-handled pliers-like tool lying flat: pivot, two jaws, two handles with grips (7 closed
+/// parts).
 Mesh make_pliers_object(const PliersObjectParams& p = {});
 
 struct KettleObjectParams {
