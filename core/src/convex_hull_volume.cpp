@@ -1,54 +1,28 @@
 #include "cordgrasp/core/convex_hull_volume.h"
 
-extern "C" {
-#include <libqhull_r/qhull_ra.h>
-}
+#include <libqhullcpp/Qhull.h>
+#include <libqhullcpp/QhullError.h>
+#include <libqhullcpp/QhullFacet.h>
+#include <libqhullcpp/QhullFacetList.h>
+#include <libqhullcpp/QhullVertexSet.h>
 
 #include <cmath>
-#include <cstdio>
+#include <sstream>
 #include <vector>
 
 #include "cordgrasp/core/mesh_properties.h"
 
 namespace cordgrasp {
-namespace {
 
-/// Owns a Qhull run; frees Qhull's memory on every path.
-class QhullRun {
- public:
-  QhullRun() {
-    err_ = std::fopen("/dev/null", "w");  // Qhull reports flat input there; we handle it
-    qh_zero(&qh_, err_);
-  }
-  ~QhullRun() {
-    qh_freeqhull(&qh_, !qh_ALL);
-    int curlong = 0, totlong = 0;
-    qh_memfreeshort(&qh_, &curlong, &totlong);
-    if (err_) std::fclose(err_);
-  }
-  QhullRun(const QhullRun&) = delete;
-  QhullRun& operator=(const QhullRun&) = delete;
-
-  /// Runs "qhull Qt" (triangulated facets) on n 3D points; false when Qhull fails (flat input).
-  bool run(std::vector<coordT>& points) {
-    char flags[] = "qhull Qt";
-    const int n = int(points.size() / 3);
-    return qh_new_qhull(&qh_, 3, n, points.data(), False, flags, nullptr, err_) == 0;
-  }
-  qhT* qh() { return &qh_; }
-
- private:
-  qhT qh_{};
-  std::FILE* err_ = nullptr;
-};
-
-}  // namespace
+// Qhull's C++ front end (qhullcpp) is used rather than the bare reentrant C API: once
+// libqhullcpp is linked, its qh_fprintf replaces libqhull_r's and aborts the process when a
+// plain C qhT reports an error (QH10025), e.g. for flat input.
 
 SolidVolume convex_hull_volume(const Mesh& mesh) {
   std::vector<char> used(mesh.vertices.size(), 0);
   for (const auto& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) used[t[k]] = 1;
-  std::vector<coordT> points;
+  std::vector<realT> points;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   int count = 0;
   for (size_t i = 0; i < mesh.vertices.size(); ++i)
@@ -62,24 +36,29 @@ SolidVolume convex_hull_volume(const Mesh& mesh) {
   out.center_of_mass_m = count > 0 ? Eigen::Vector3d(sum / count) : sum;
   if (count < 4) return out;
 
-  QhullRun run;
-  if (!run.run(points)) return out;
-  qhT* qh = run.qh();
-  // Tetrahedra from an interior point to each (triangulated) facet; |volume| since the hull is
-  // convex and the interior point inside it.
-  const Eigen::Vector3d o(qh->interior_point[0], qh->interior_point[1], qh->interior_point[2]);
+  orgQhull::Qhull qhull;
+  std::ostringstream messages;  // keep Qhull's diagnostics off stderr
+  qhull.setErrorStream(&messages);
+  qhull.setOutputStream(&messages);
+  try {
+    qhull.runQhull("", 3, count, points.data(), "Qt");  // triangulated facets
+  } catch (const orgQhull::QhullError&) {
+    return out;  // flat or otherwise degenerate input: no volume
+  }
+  // Tetrahedra from an interior point to each facet; |volume| since the hull is convex and the
+  // interior point inside it.
+  const realT* interior = qhull.qh()->interior_point;
+  const Eigen::Vector3d o(interior[0], interior[1], interior[2]);
   double volume = 0.0;
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();
-  facetT* facet;
-  FORALLfacets {
+  for (const orgQhull::QhullFacet& facet : qhull.facetList()) {
+    const orgQhull::QhullVertexSet vertices = facet.vertices();
+    if (vertices.size() != 3) continue;  // "Qt" gives simplicial facets
     Eigen::Vector3d p[3];
-    int k = 0;
-    vertexT *vertex, **vertexp;
-    FOREACHvertex_(facet->vertices) {
-      if (k < 3) p[k] = Eigen::Vector3d(vertex->point[0], vertex->point[1], vertex->point[2]);
-      ++k;
+    for (int k = 0; k < 3; ++k) {
+      const realT* c = vertices[k].point().coordinates();
+      p[k] = Eigen::Vector3d(c[0], c[1], c[2]);
     }
-    if (k != 3) continue;  // Qt gives simplicial facets
     const double v = std::abs((p[0] - o).dot((p[1] - o).cross(p[2] - o))) / 6.0;
     volume += v;
     moment += v * (o + p[0] + p[1] + p[2]) / 4.0;
