@@ -28,25 +28,19 @@ std::unique_ptr<btConvexShape> make_hull_shape(const Mesh& mesh, double margin) 
   if (mesh.vertices.size() < 4) return nullptr;
   std::vector<double> coords;
   coords.reserve(mesh.vertices.size() * 3);
-  Eigen::Vector3d lo = mesh.vertices[0], hi = mesh.vertices[0];
-  for (const auto& v : mesh.vertices) {
-    coords.insert(coords.end(), {v.x(), v.y(), v.z()});
-    lo = lo.cwiseMin(v);
-    hi = hi.cwiseMax(v);
-  }
-  // Shrink the hull planes by the margin so hull + margin ≈ the authored hull; never shrink a
-  // thin part by more than a quarter of its smallest extent.
-  const double clamp = 0.25 * (hi - lo).minCoeff();
+  for (const auto& v : mesh.vertices) coords.insert(coords.end(), {v.x(), v.y(), v.z()});
+  // Shrink the hull planes by the margin so hull + margin ≈ the authored hull; the shrink is
+  // clamped to a quarter of the hull's inner radius (btConvexHullComputer's relative clamp) so
+  // thin parts keep their shape. The achieved shrink becomes the margin.
   btConvexHullComputer hull;
-  hull.compute(coords.data(), 3 * static_cast<int>(sizeof(double)),
-               static_cast<int>(mesh.vertices.size()), margin, clamp);
+  const double shrink = hull.compute(coords.data(), 3 * static_cast<int>(sizeof(double)),
+                                     static_cast<int>(mesh.vertices.size()), margin, 0.25);
   if (hull.vertices.size() < 4) return nullptr;
   auto shape = std::make_unique<btConvexHullShape>();
   for (int i = 0; i < hull.vertices.size(); ++i) shape->addPoint(hull.vertices[i], false);
   shape->recalcLocalAabb();
-  // The achieved shrink can be smaller than asked (clamped): use it as the margin.
-  const double achieved = std::min(margin, std::max(clamp, 0.0));
-  shape->setMargin(achieved > 1e-6 ? achieved : 1e-6);
+  // GJK wants some margin; an unshrinkable (flat) hull gets 1 µm of inflation.
+  shape->setMargin(std::max(shrink, 1e-6));
   return shape;
 }
 
