@@ -2,13 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <numeric>
 #include <random>
 #include <stdexcept>
 
 #include <Eigen/SVD>
+#include <libqhullcpp/Qhull.h>
+#include <libqhullcpp/QhullError.h>
+#include <sstream>
 
 #include "cordgrasp/core/mesh_properties.h"
 
@@ -23,12 +25,6 @@ namespace {
 constexpr int kDim = 6;
 // Relative singular-value threshold below which the wrench set is taken as lower-dimensional.
 constexpr double kRankTolerance = 1e-9;
-
-// Qhull reports through a FILE*; keep it quiet (results are checked through the exit code).
-FILE* qhull_error_sink() {
-  static FILE* sink = std::fopen("/dev/null", "w");
-  return sink;
-}
 
 // Unit tangent pair (t1, t2) ⊥ n, deterministic: t1 is the coordinate axis least aligned with n,
 // projected onto the tangent plane; t2 = n × t1.
@@ -97,40 +93,40 @@ WrenchHull wrench_hull(const std::vector<Wrench>& wrenches) {
   for (size_t i = 0; i < wrenches.size(); ++i)
     for (int d = 0; d < kDim; ++d) coords[i * kDim + d] = wrenches[i][d];
 
-  qhT qh_storage;
-  qhT* qh = &qh_storage;
-  FILE* sink = qhull_error_sink();
-  qh_zero(qh, sink);
-  char options[] = "qhull QJ Pp";
-  const int exitcode = qh_new_qhull(qh, kDim, static_cast<int>(wrenches.size()), coords.data(),
-                                    False, options, nullptr, sink);
-  if (exitcode == 0) {
-    // Vertex centroid of the hull (Simox's "center" of the convex hull).
-    Wrench centroid = Wrench::Zero();
-    int nvertices = 0;
-    vertexT* vertex;
-    FORALLvertices {
-      for (int d = 0; d < kDim; ++d) centroid[d] += vertex->point[d];
-      ++nvertices;
-    }
-    if (nvertices > 0) centroid /= nvertices;
-    out.max_offset = -std::numeric_limits<double>::infinity();
-    out.min_origin_distance = std::numeric_limits<double>::infinity();
-    out.min_centroid_distance = std::numeric_limits<double>::infinity();
-    facetT* facet;
-    FORALLfacets {
-      const Eigen::Map<const Eigen::Matrix<coordT, kDim, 1>> a(facet->normal);
-      const double b = facet->offset;
-      out.max_offset = std::max(out.max_offset, b);
-      out.min_origin_distance = std::min(out.min_origin_distance, -b);
-      out.min_centroid_distance = std::min(out.min_centroid_distance, -(a.dot(centroid) + b));
-      ++out.facets;
-    }
-    out.valid = out.facets > 0 && nvertices > 0;
+  // Qhull's C++ front end: with libqhullcpp linked, errors of a bare C qhT abort the process
+  // (see convex_hull_volume.cpp); orgQhull::Qhull turns them into exceptions.
+  orgQhull::Qhull qhull;
+  std::ostringstream messages;  // keep Qhull's diagnostics off stderr
+  qhull.setErrorStream(&messages);
+  qhull.setOutputStream(&messages);
+  try {
+    qhull.runQhull("", kDim, static_cast<int>(wrenches.size()), coords.data(), "QJ Pp");
+  } catch (const orgQhull::QhullError&) {
+    return out;
   }
-  qh_freeqhull(qh, !qh_ALL);
-  int curlong = 0, totlong = 0;
-  qh_memfreeshort(qh, &curlong, &totlong);
+  qhT* qh = qhull.qh();
+  // Vertex centroid of the hull (Simox's "center" of the convex hull).
+  Wrench centroid = Wrench::Zero();
+  int nvertices = 0;
+  vertexT* vertex;
+  FORALLvertices {
+    for (int d = 0; d < kDim; ++d) centroid[d] += vertex->point[d];
+    ++nvertices;
+  }
+  if (nvertices > 0) centroid /= nvertices;
+  out.max_offset = -std::numeric_limits<double>::infinity();
+  out.min_origin_distance = std::numeric_limits<double>::infinity();
+  out.min_centroid_distance = std::numeric_limits<double>::infinity();
+  facetT* facet;
+  FORALLfacets {
+    const Eigen::Map<const Eigen::Matrix<coordT, kDim, 1>> a(facet->normal);
+    const double b = facet->offset;
+    out.max_offset = std::max(out.max_offset, b);
+    out.min_origin_distance = std::min(out.min_origin_distance, -b);
+    out.min_centroid_distance = std::min(out.min_centroid_distance, -(a.dot(centroid) + b));
+    ++out.facets;
+  }
+  out.valid = out.facets > 0 && nvertices > 0;
   if (!out.valid) out = WrenchHull{};
   return out;
 }
