@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -372,16 +373,28 @@ FingerResult run_finger_stage(const HandModel& hand, const HandSetup& setup,
     return false;
   };
 
+  auto hand_lower_bound = [&]() {
+    double bound = std::numeric_limits<double>::infinity();
+    for (int l : geometry_links)
+      bound = std::min(bound, collider.link_object_distance_lower_bound(l));
+    return bound;
+  };
+
+  // Approach in steps; steps within the hand's conservative distance bound cannot collide and
+  // are taken without a query (same result as checking every step).
   Eigen::Isometry3d X_OG = X_OG_start;
   const Eigen::Vector3d z = X_OG.linear().col(2);
   bool colliding = hand_collides(X_OG);
   double travel = 0.0;
+  double free_until = colliding ? 0.0 : hand_lower_bound();
   while (!colliding && travel < approach_travel_m - 1e-12) {
     const double step = std::min(params.approach_step_m, approach_travel_m - travel);
     travel += step;
     X_OG.translation() += step * z;
     ++r.approach_steps;
+    if (travel <= free_until) continue;
     colliding = hand_collides(X_OG);
+    if (!colliding) free_until = travel + hand_lower_bound();
   }
   while (colliding) {
     if (r.retreat_steps >= params.max_retreat_steps) {

@@ -43,6 +43,11 @@ class HandObjectCollider {
   /// True when the geometries of two links overlap (distance < 0).
   virtual bool links_collide(int link_a, int link_b) = 0;
 
+  /// Cheap conservative lower bound on the link–object distance [m] (e.g. bounding volumes):
+  /// the true distance is at least this; may be ≤ 0 near the object; +inf without geometry.
+  /// Lets callers skip steps that cannot collide.
+  virtual double link_object_distance_lower_bound(int link) = 0;
+
   /// Closest points between the link and the object when their distance is at most
   /// `max_distance_m` (penetrating pairs included, with negative distance); nullopt otherwise.
   virtual std::optional<LinkObjectProximity> link_object_proximity(int link,
