@@ -1,0 +1,336 @@
+#include "cordgrasp/sim/bullet_hand_collider.h"
+
+#include <BulletCollision/CollisionShapes/btTriangleShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
+#include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
+#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
+
+#include <LinearMath/btConvexHullComputer.h>
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include "bullet_shapes.h"
+
+namespace cordgrasp {
+
+namespace {
+
+using bullet::from_bt;
+using bullet::to_bt;
+
+struct Aabb3 {
+  btVector3 lo, hi;
+  bool overlaps(const Aabb3& o) const {
+    return lo.x() <= o.hi.x() && o.lo.x() <= hi.x() && lo.y() <= o.hi.y() &&
+           o.lo.y() <= hi.y() && lo.z() <= o.hi.z() && o.lo.z() <= hi.z();
+  }
+};
+
+// Cheap conservative tests that let most triangles skip GJK: the child's bounding sphere and,
+// for polyhedral children, its face planes pushed out by the margin (child frame).
+struct ConvexCuller {
+  btVector3 center{0, 0, 0};
+  double radius = 0.0;
+  std::vector<btVector4> planes;  // n·p ≤ w inside (unit n)
+};
+
+ConvexCuller make_culler(const btConvexShape& shape) {
+  ConvexCuller c;
+  shape.getBoundingSphere(c.center, c.radius);
+  if (shape.getShapeType() == BOX_SHAPE_PROXYTYPE) {
+    const btVector3 h = static_cast<const btBoxShape&>(shape).getHalfExtentsWithMargin();
+    for (int a = 0; a < 3; ++a) {
+      btVector3 n(0, 0, 0);
+      n[a] = 1.0;
+      c.planes.emplace_back(n.x(), n.y(), n.z(), h[a]);
+      c.planes.emplace_back(-n.x(), -n.y(), -n.z(), h[a]);
+    }
+  } else if (shape.getShapeType() == CONVEX_HULL_SHAPE_PROXYTYPE) {
+    const auto& hull_shape = static_cast<const btConvexHullShape&>(shape);
+    std::vector<double> coords;
+    for (int i = 0; i < hull_shape.getNumPoints(); ++i) {
+      const btVector3 p = hull_shape.getScaledPoint(i);
+      coords.insert(coords.end(), {p.x(), p.y(), p.z()});
+    }
+    btConvexHullComputer hull;
+    hull.compute(coords.data(), 3 * static_cast<int>(sizeof(double)),
+                 hull_shape.getNumPoints(), 0.0, 0.0);
+    btVector3 centroid(0, 0, 0);
+    for (int i = 0; i < hull.vertices.size(); ++i) centroid += hull.vertices[i];
+    if (hull.vertices.size() > 0) centroid /= hull.vertices.size();
+    for (int f = 0; f < hull.faces.size(); ++f) {
+      const btConvexHullComputer::Edge* e0 = &hull.edges[hull.faces[f]];
+      const btConvexHullComputer::Edge* e1 = e0->getNextEdgeOfFace();
+      const btVector3& a = hull.vertices[e0->getSourceVertex()];
+      const btVector3& b = hull.vertices[e1->getSourceVertex()];
+      const btVector3& d = hull.vertices[e1->getTargetVertex()];
+      btVector3 n = (b - a).cross(d - a);
+      if (n.length2() <= 0.0) continue;
+      n.normalize();
+      double w = n.dot(a);
+      if (n.dot(centroid) > w) {
+        n = -n;
+        w = -w;
+      }
+      c.planes.emplace_back(n.x(), n.y(), n.z(), w + shape.getMargin());
+    }
+  }
+  return c;
+}
+
+// Squared distance from p to triangle (a, b, c) (Ericson, Real-Time Collision Detection 5.1.5).
+double point_triangle_distance2(const btVector3& p, const btVector3& a, const btVector3& b,
+                                const btVector3& c) {
+  const btVector3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return ap.length2();
+  const btVector3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return bp.length2();
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return (p - (a + ab * (d1 / (d1 - d3)))).length2();
+  const btVector3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return cp.length2();
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return (p - (a + ac * (d2 / (d2 - d6)))).length2();
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return (p - (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))))).length2();
+  const double denom = 1.0 / (va + vb + vc);
+  return (p - (a + ab * (vb * denom) + ac * (vc * denom))).length2();
+}
+
+// Closest points of one convex child against the triangles of the object BVH near it.
+class TriangleQuery : public btTriangleCallback {
+ public:
+  TriangleQuery(const btConvexShape* convex, const ConvexCuller& culler, const btTransform& X_OC,
+                double max_distance, bool stop_at_penetration)
+      : convex_(convex),
+        culler_(culler),
+        X_OC_(X_OC),
+        X_CO_(X_OC.inverse()),
+        max_distance_(max_distance),
+        stop_(stop_at_penetration) {
+    const double reach = max_distance + convex->getMargin();
+    max_sq_ = reach * reach;
+    const double r = culler.radius + max_distance;
+    sphere_reach_sq_ = r * r;
+  }
+
+  void processTriangle(btVector3* tri, int /*part*/, int /*index*/) override {
+    if (stop_ && found_ && best_.m_distance < 0.0) return;
+    // Conservative rejects in the child frame: outside the bounding sphere, or all three
+    // corners beyond one face plane (both widened by max_distance).
+    const btVector3 a = X_CO_ * tri[0], b = X_CO_ * tri[1], c = X_CO_ * tri[2];
+    if (point_triangle_distance2(culler_.center, a, b, c) > sphere_reach_sq_) return;
+    for (const btVector4& pl : culler_.planes) {
+      const btVector3 n(pl.x(), pl.y(), pl.z());
+      const double w = pl.w() + max_distance_;
+      if (n.dot(a) > w && n.dot(b) > w && n.dot(c) > w) return;
+    }
+    btTriangleShape triangle(tri[0], tri[1], tri[2]);
+    triangle.setMargin(0.0);
+    btVoronoiSimplexSolver simplex;
+    btGjkEpaPenetrationDepthSolver epa;
+    btGjkPairDetector gjk(convex_, &triangle, &simplex, &epa);
+    btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+    input.m_transformA = X_OC_;
+    input.m_transformB.setIdentity();
+    input.m_maximumDistanceSquared = max_sq_;
+    btPointCollector result;
+    gjk.getClosestPoints(input, result, nullptr);
+    if (!result.m_hasResult || result.m_distance > max_distance_) return;
+    if (!found_ || result.m_distance < best_.m_distance) {
+      best_ = result;
+      found_ = true;
+    }
+  }
+
+  bool found() const { return found_; }
+  const btPointCollector& best() const { return best_; }
+
+ private:
+  const btConvexShape* convex_;
+  const ConvexCuller& culler_;
+  btTransform X_OC_;
+  btTransform X_CO_;
+  double max_distance_;
+  bool stop_;
+  double max_sq_ = 0.0;
+  double sphere_reach_sq_ = 0.0;
+  bool found_ = false;
+  btPointCollector best_;
+};
+
+class BulletHandCollider final : public HandObjectCollider {
+ public:
+  BulletHandCollider(const HandModel& hand, const Mesh& object,
+                     const BulletColliderParams& params) {
+    bullet::ShapeParams sp;
+    sp.link_margin_m = params.link_margin_m;
+    sp.object_margin_m = params.object_margin_m;
+    object_ = bullet::make_object_mesh_shape(object, sp);
+    if (!object_->shape)
+      throw std::invalid_argument("make_bullet_hand_collider: mesh '" + object.name +
+                                  "' has no non-degenerate triangle");
+    btVector3 lo, hi;
+    btTransform identity;
+    identity.setIdentity();
+    object_->shape->getAabb(identity, lo, hi);
+    object_aabb_ = {lo, hi};
+    object_center_ = btVector3(0, 0, 0);
+    for (const auto& v : object.vertices) object_center_ += bullet::to_bt(v);
+    object_center_ /= static_cast<double>(object.vertices.size());
+    object_radius_ = 0.0;
+    for (const auto& v : object.vertices)
+      object_radius_ = std::max(object_radius_, (bullet::to_bt(v) - object_center_).length());
+    links_.reserve(hand.links.size());
+    for (const Link& link : hand.links) links_.push_back(bullet::make_link_shape(link, sp));
+    cullers_.resize(links_.size());
+    for (size_t l = 0; l < links_.size(); ++l)
+      for (const auto& child : links_[l].children) cullers_[l].push_back(make_culler(*child));
+    X_OL_.assign(links_.size(), identity);
+    child_aabb_.resize(links_.size());
+    link_aabb_.resize(links_.size());
+    for (size_t i = 0; i < links_.size(); ++i) update_aabbs(static_cast<int>(i));
+  }
+
+  int num_links() const override { return static_cast<int>(links_.size()); }
+
+  bool has_geometry(int link) const override { return links_.at(link).compound != nullptr; }
+
+  void set_link_poses(const std::vector<Eigen::Isometry3d>& X_OL) override {
+    if (X_OL.size() != links_.size())
+      throw std::invalid_argument("HandObjectCollider::set_link_poses: wrong number of poses");
+    for (size_t i = 0; i < X_OL.size(); ++i) set_link_pose(static_cast<int>(i), X_OL[i]);
+  }
+
+  void set_link_pose(int link, const Eigen::Isometry3d& X_OL) override {
+    X_OL_.at(link) = to_bt(X_OL);
+    update_aabbs(link);
+  }
+
+  bool link_collides_with_object(int link) override {
+    const LinkShape& s = links_.at(link);
+    if (!s.compound || !link_aabb_[link].overlaps(object_aabb_)) return false;
+    for (size_t c = 0; c < s.children.size(); ++c) {
+      if (!child_aabb_[link][c].overlaps(object_aabb_)) continue;
+      TriangleQuery q(s.children[c].get(), cullers_[link][c], child_pose(link, c), 0.0, true);
+      object_->shape->processAllTriangles(&q, child_aabb_[link][c].lo, child_aabb_[link][c].hi);
+      if (q.found() && q.best().m_distance < 0.0) return true;
+    }
+    return false;
+  }
+
+  bool links_collide(int a, int b) override {
+    const LinkShape& sa = links_.at(a);
+    const LinkShape& sb = links_.at(b);
+    if (!sa.compound || !sb.compound || !link_aabb_[a].overlaps(link_aabb_[b])) return false;
+    for (size_t i = 0; i < sa.children.size(); ++i) {
+      for (size_t j = 0; j < sb.children.size(); ++j) {
+        if (!child_aabb_[a][i].overlaps(child_aabb_[b][j])) continue;
+        btVoronoiSimplexSolver simplex;
+        btGjkEpaPenetrationDepthSolver epa;
+        btGjkPairDetector gjk(sa.children[i].get(), sb.children[j].get(), &simplex, &epa);
+        btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+        input.m_transformA = child_pose(a, i);
+        input.m_transformB = child_pose(b, j);
+        const double reach = sa.children[i]->getMargin() + sb.children[j]->getMargin();
+        input.m_maximumDistanceSquared = reach * reach;
+        btPointCollector result;
+        gjk.getClosestPoints(input, result, nullptr);
+        if (result.m_hasResult && result.m_distance < 0.0) return true;
+      }
+    }
+    return false;
+  }
+
+  double link_object_distance_lower_bound(int link) override {
+    const LinkShape& s = links_.at(link);
+    double bound = std::numeric_limits<double>::infinity();
+    for (size_t c = 0; c < s.children.size(); ++c) {
+      const ConvexCuller& cull = cullers_[link][c];
+      const btVector3 center = child_pose(link, c) * cull.center;
+      // Distance from the sphere centre to the object's AABB, and to its bounding sphere.
+      const btVector3 clamped(std::clamp(center.x(), object_aabb_.lo.x(), object_aabb_.hi.x()),
+                              std::clamp(center.y(), object_aabb_.lo.y(), object_aabb_.hi.y()),
+                              std::clamp(center.z(), object_aabb_.lo.z(), object_aabb_.hi.z()));
+      const double to_box = (center - clamped).length();
+      const double to_sphere = (center - object_center_).length() - object_radius_;
+      bound = std::min(bound, std::max(to_box, to_sphere) - cull.radius);
+    }
+    return bound;
+  }
+
+  std::optional<LinkObjectProximity> link_object_proximity(int link,
+                                                           double max_distance_m) override {
+    const LinkShape& s = links_.at(link);
+    if (!s.compound) return std::nullopt;
+    const btVector3 pad(max_distance_m, max_distance_m, max_distance_m);
+    bool found = false;
+    btPointCollector best;
+    for (size_t c = 0; c < s.children.size(); ++c) {
+      const Aabb3 box{child_aabb_[link][c].lo - pad, child_aabb_[link][c].hi + pad};
+      if (!box.overlaps(object_aabb_)) continue;
+      TriangleQuery q(s.children[c].get(), cullers_[link][c], child_pose(link, c), max_distance_m,
+                      false);
+      object_->shape->processAllTriangles(&q, box.lo, box.hi);
+      if (q.found() && (!found || q.best().m_distance < best.m_distance)) {
+        best = q.best();
+        found = true;
+      }
+    }
+    if (!found) return std::nullopt;
+    LinkObjectProximity out;
+    out.distance_m = best.m_distance;
+    out.p_object_O = from_bt(best.m_pointInWorld);
+    out.n_O = from_bt(best.m_normalOnBInWorld).normalized();
+    out.p_link_O = out.p_object_O + best.m_distance * out.n_O;
+    return out;
+  }
+
+ private:
+  using LinkShape = bullet::LinkShape;
+
+  btTransform child_pose(int link, size_t child) const {
+    return X_OL_[link] * links_[link].compound->getChildTransform(static_cast<int>(child));
+  }
+
+  void update_aabbs(int link) {
+    const LinkShape& s = links_[link];
+    child_aabb_[link].resize(s.children.size());
+    Aabb3 all{btVector3(1, 1, 1) * std::numeric_limits<double>::max(),
+              btVector3(1, 1, 1) * -std::numeric_limits<double>::max()};
+    for (size_t c = 0; c < s.children.size(); ++c) {
+      btVector3 lo, hi;
+      s.children[c]->getAabb(child_pose(link, c), lo, hi);
+      child_aabb_[link][c] = {lo, hi};
+      all.lo.setMin(lo);
+      all.hi.setMax(hi);
+    }
+    link_aabb_[link] = all;
+  }
+
+  std::unique_ptr<bullet::ObjectMeshShape> object_;
+  Aabb3 object_aabb_;
+  btVector3 object_center_{0, 0, 0};  // vertex mean
+  double object_radius_ = 0.0;        // max vertex distance from it
+  std::vector<LinkShape> links_;
+  std::vector<std::vector<ConvexCuller>> cullers_;
+  std::vector<btTransform> X_OL_;
+  std::vector<std::vector<Aabb3>> child_aabb_;
+  std::vector<Aabb3> link_aabb_;
+};
+
+}  // namespace
+
+std::unique_ptr<HandObjectCollider> make_bullet_hand_collider(
+    const HandModel& hand, const Mesh& object, const BulletColliderParams& params) {
+  return std::make_unique<BulletHandCollider>(hand, object, params);
+}
+
+}  // namespace cordgrasp
