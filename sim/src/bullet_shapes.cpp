@@ -3,6 +3,7 @@
 #include <LinearMath/btConvexHullComputer.h>
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace cordgrasp::bullet {
 
@@ -22,19 +23,18 @@ Eigen::Isometry3d from_bt(const btTransform& X) {
   return out;
 }
 
-namespace {
-
-std::unique_ptr<btConvexShape> make_hull_shape(const Mesh& mesh, double margin) {
-  if (mesh.vertices.size() < 4) return nullptr;
+std::unique_ptr<btConvexHullShape> make_convex_hull_shape(
+    const std::vector<Eigen::Vector3d>& points, double margin_m) {
+  if (points.size() < 4) return nullptr;
   std::vector<double> coords;
-  coords.reserve(mesh.vertices.size() * 3);
-  for (const auto& v : mesh.vertices) coords.insert(coords.end(), {v.x(), v.y(), v.z()});
+  coords.reserve(points.size() * 3);
+  for (const auto& v : points) coords.insert(coords.end(), {v.x(), v.y(), v.z()});
   // Shrink the hull planes by the margin so hull + margin ≈ the authored hull; the shrink is
   // clamped to a quarter of the hull's inner radius (btConvexHullComputer's relative clamp) so
   // thin parts keep their shape. The achieved shrink becomes the margin.
   btConvexHullComputer hull;
   const double shrink = hull.compute(coords.data(), 3 * static_cast<int>(sizeof(double)),
-                                     static_cast<int>(mesh.vertices.size()), margin, 0.25);
+                                     static_cast<int>(points.size()), margin_m, 0.25);
   if (hull.vertices.size() < 4) return nullptr;
   auto shape = std::make_unique<btConvexHullShape>();
   for (int i = 0; i < hull.vertices.size(); ++i) shape->addPoint(hull.vertices[i], false);
@@ -42,6 +42,12 @@ std::unique_ptr<btConvexShape> make_hull_shape(const Mesh& mesh, double margin) 
   // GJK wants some margin; an unshrinkable (flat) hull gets 1 µm of inflation.
   shape->setMargin(std::max(shrink, 1e-6));
   return shape;
+}
+
+namespace {
+
+std::unique_ptr<btConvexShape> make_hull_shape(const Mesh& mesh, double margin) {
+  return make_convex_hull_shape(mesh.vertices, margin);
 }
 
 }  // namespace
@@ -77,12 +83,22 @@ std::unique_ptr<btConvexShape> make_geometry_shape(const Geometry& g, const Shap
 }
 
 LinkShape make_link_shape(const Link& link, const ShapeParams& params) {
+  return make_links_shape({&link}, {Eigen::Isometry3d::Identity()}, params);
+}
+
+LinkShape make_links_shape(const std::vector<const Link*>& links,
+                           const std::vector<Eigen::Isometry3d>& X_FL,
+                           const ShapeParams& params) {
+  if (links.size() != X_FL.size())
+    throw std::invalid_argument("make_links_shape: links and X_FL differ in size");
   LinkShape out;
-  for (const Geometry& g : link.collisions) {
-    auto child = make_geometry_shape(g, params);
-    if (!child) continue;
-    out.children.push_back(std::move(child));
-    out.X_LC.push_back(g.X_LG);
+  for (size_t l = 0; l < links.size(); ++l) {
+    for (const Geometry& g : links[l]->collisions) {
+      auto child = make_geometry_shape(g, params);
+      if (!child) continue;
+      out.children.push_back(std::move(child));
+      out.X_LC.push_back(X_FL[l] * g.X_LG);
+    }
   }
   if (out.children.empty()) return out;
   out.compound = std::make_unique<btCompoundShape>(/*enableDynamicAabbTree=*/false,

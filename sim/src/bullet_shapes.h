@@ -38,11 +38,24 @@ std::unique_ptr<btConvexShape> make_geometry_shape(const Geometry& geometry,
 struct LinkShape {
   std::unique_ptr<btCompoundShape> compound;  ///< nullptr when the link has no collision geometry
   std::vector<std::unique_ptr<btConvexShape>> children;  ///< child i of `compound`
-  std::vector<Eigen::Isometry3d> X_LC;                    ///< child frames in the link frame
+  std::vector<Eigen::Isometry3d> X_LC;  ///< child frames in the link frame (F: make_links_shape)
 };
 
 /// Builds the LinkShape of `link` (compound is nullptr when it has no usable geometry).
 LinkShape make_link_shape(const Link& link, const ShapeParams& params = {});
+
+/// One compound for several links rigidly joined (fixed joints merged into one body, as the
+/// physics does): link i's elements sit at X_FL[i]·X_LG in the common frame F. The same child
+/// shapes as make_link_shape. @throws std::invalid_argument when the sizes differ.
+LinkShape make_links_shape(const std::vector<const Link*>& links,
+                           const std::vector<Eigen::Isometry3d>& X_FL,
+                           const ShapeParams& params = {});
+
+/// Shrink-wrapped convex hull of points (as link meshes get): hull planes pulled in by
+/// `margin_m` (at most a quarter of the inner radius), that margin set on the shape, so hull +
+/// margin ≈ the points' hull. nullptr for fewer than 4 points or a degenerate hull.
+std::unique_ptr<btConvexHullShape> make_convex_hull_shape(
+    const std::vector<Eigen::Vector3d>& points, double margin_m);
 
 /// The object as a static concave triangle mesh (btBvhTriangleMeshShape over a copy of the
 /// soup; zero-area triangles dropped). Owns the vertex/index arrays Bullet points into.

@@ -1,0 +1,47 @@
+#pragma once
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cordgrasp/core/mesh.h"
+
+namespace cordgrasp {
+
+/// Parameters of the HACD convex decomposition (Bullet extras, K. Mamou 2011).
+struct DecompositionParams {
+  /// Largest concavity a part may have, as a fraction of the bounding-box diagonal [-].
+  double concavity = 0.01;
+  int min_parts = 1;               ///< HACD stops merging at this many parts
+  int max_hull_vertices = 64;      ///< vertices per part hull (HACD simplifies beyond)
+  double compacity_weight = 0.1;   ///< HACD α: favours compact parts
+  double volume_weight = 0.0;      ///< HACD β
+  /// Join disconnected components closer than this (fraction of the diagonal); < 0 = never.
+  double connect_distance = 0.01;
+  bool add_extra_distance_points = true;  ///< HACD: rays through the object (slow, robust)
+  bool add_face_points = true;            ///< HACD: face centres as distance points
+};
+
+/// Convex parts of a mesh, in the mesh frame.
+struct ConvexDecomposition {
+  std::vector<std::vector<Eigen::Vector3d>> parts;  ///< hull vertices of each part [m]
+  double compute_s = 0.0;   ///< wall time of the HACD run that produced it [s]
+  bool from_cache = false;  ///< served from the memory or disk cache
+};
+
+/// HACD decomposition of a triangle soup (vertices welded at identical coordinates first).
+/// A mesh HACD cannot handle gives one part: its convex hull. Deterministic.
+/// @throws std::invalid_argument for an empty mesh.
+ConvexDecomposition convex_decomposition(const Mesh& mesh, const DecompositionParams& params);
+
+/// convex_decomposition() cached in memory (per process, thread-safe) and, when `cache_dir` is
+/// not empty, on disk as `<cache_dir>/<key>.hacd` (exact binary doubles; written atomically).
+/// The key hashes the mesh's vertices, triangles and the parameters.
+std::shared_ptr<const ConvexDecomposition> cached_convex_decomposition(
+    const Mesh& mesh, const DecompositionParams& params, const std::string& cache_dir = "");
+
+/// 64-bit FNV-1a hash of the mesh geometry (vertex coordinates and triangle indices), as 16 hex
+/// digits.
+std::string mesh_hash(const Mesh& mesh);
+
+}  // namespace cordgrasp

@@ -1,0 +1,137 @@
+#pragma once
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "cordgrasp/core/contact_model.h"
+#include "cordgrasp/sim/convex_decomposition.h"
+
+namespace cordgrasp {
+
+/// How the dynamic object collides (issue 5; measurements in docs/physics.md).
+enum class ObjectShape {
+  kAuto,           ///< convex hull for (nearly) convex objects, else kDecomposition
+  kConvexHull,     ///< one convex hull of the whole mesh
+  kDecomposition,  ///< HACD convex decomposition (compound of hulls), cached per mesh
+  kGImpact,        ///< the triangle mesh itself (btGImpactMeshShape)
+};
+
+/// "auto", "hull", "decomposition", "gimpact".
+const char* to_string(ObjectShape shape);
+
+/// Parses the names of to_string(ObjectShape). @throws std::invalid_argument otherwise.
+ObjectShape object_shape_from_string(const std::string& text);
+
+/// Where the world frame W is put relative to the object frame O (gravity is always −z_W).
+enum class WorldFrame {
+  /// W rotated so that the planned GCP approach axis (+z_G) points down (−z_W) and x_G = x_W:
+  /// the hand grasps from above and lifts the object against gravity (default).
+  kApproachDown,
+  /// W = O: the object's own frame decides what is up.
+  kObject,
+};
+
+/// Parameters of the physics validation (issue 5). Defaults were chosen by measurement; each
+/// field says why (see docs/physics.md for the numbers).
+struct SimParams {
+  // --- Contact ---------------------------------------------------------------------------
+  /// Coulomb friction μ of finger–object contacts: the planner's ContactModel (one source of
+  /// truth, core/contact_model.h). Bullet multiplies the two bodies' frictions; hand links get
+  /// 1 and the object μ, so every finger–object contact uses exactly μ.
+  ContactModel contact;
+  /// Margin of hand link shapes [m] (≤ 1 mm; hulls are shrink-wrapped by it, bullet_shapes.h).
+  double link_margin_m = 0.5e-3;
+  /// Margin of object hulls [m] (shrink-wrapped like the links'); GImpact triangles use it too.
+  double object_margin_m = 0.5e-3;
+
+  // --- Integration and solver ------------------------------------------------------------
+  /// Fixed time step [s]. 1/240 s keeps penetration < 1 mm with 2 N·m fingers on 10 g links.
+  double time_step_s = 1.0 / 240.0;
+  /// Sequential-impulse iterations per step.
+  int solver_iterations = 50;
+  /// Error reduction of contacts and joint constraints (Bullet erp, erp2) [0..1].
+  double erp = 0.2;
+  /// Error reduction of friction anchors [0..1].
+  double friction_erp = 0.2;
+  /// Constraint force mixing (softness) of every constraint [-].
+  double cfm = 0.0;
+  /// Allowed penetration before contacts push back [m].
+  double linear_slop_m = 0.0;
+  /// Error reduction of the mimic gear constraints [0..1].
+  double gear_erp = 0.5;
+  /// The solver stops iterating once the squared impulse change of an iteration is below
+  /// this (Bullet leastSquaresResidualThreshold) [N²·s²]; 0 = always run every iteration.
+  double solver_residual_threshold = 0.0;
+  /// Friction as Bullet's implicit cone (true) or the two-direction pyramid (false).
+  bool cone_friction = true;
+
+  // --- Object ------------------------------------------------------------------------------
+  /// Density of the object [kg/m³]: mass = density × closed volume (convex-hull volume for
+  /// open meshes). 500 kg/m³ is half water: light hollow household objects.
+  double density_kgm3 = 500.0;
+  /// Mass override [kg] (CLI --mass); the inertia is scaled to it.
+  std::optional<double> mass_kg;
+  /// Collision shape of the object.
+  ObjectShape object_shape = ObjectShape::kAuto;
+  /// kAuto picks the single hull when closed volume / hull volume ≥ this (open meshes: when
+  /// the decomposition has one part) [-].
+  double convex_volume_ratio = 0.95;
+  /// HACD parameters (convex_decomposition.h).
+  DecompositionParams decomposition;
+  /// Directory for the on-disk decomposition cache keyed by mesh hash; empty = memory only.
+  std::string decomposition_cache_dir;
+
+  // --- Hand --------------------------------------------------------------------------------
+  /// Closing speed of actor joints per unit of the actor's direction_speed [rad/s] (a
+  /// prismatic joint with speed 0.1 closes at 0.1 × this m/s), capped by the URDF velocity;
+  /// the reach stage's minimum-jerk paths peak at this speed.
+  double close_speed = 1.5;
+  /// Squeeze: closing targets lie this far past the planned joint values [rad]...
+  double squeeze_rad = 0.1;
+  /// ...or [m] for prismatic joints (clamped to the joint limits). Less than 1 cm: fingers
+  /// planned 1 cm short of the object never reach it.
+  double squeeze_m = 0.005;
+  /// Effort limit of revolute joints whose URDF gives none (0) [N·m].
+  double default_effort_Nm = 2.0;
+  /// Effort limit of prismatic joints whose URDF gives none (0) [N].
+  double default_effort_N = 50.0;
+  /// Multiplies every effort limit (e.g. 0.1 for weak motors) [-].
+  double effort_scale = 1.0;
+  /// Position gain of the joint servos: commanded speed = gain × error, capped [1/s].
+  double servo_gain_per_s = 20.0;
+  /// Speed cap of joints that only hold their planned value [rad/s or 10× m/s].
+  double hold_speed = 1.0;
+  /// Cancel gravity on the hand (the arm's controller would): only the grasp is tested.
+  bool hand_gravity_compensation = true;
+  /// Impulse cap of the constraint that carries the hand base [N·s per step ÷ dt = N].
+  double base_max_force_N = 2000.0;
+
+  // --- Protocol (issue 5) ------------------------------------------------------------------
+  WorldFrame world_frame = WorldFrame::kApproachDown;
+  double gravity_mps2 = 9.81;         ///< magnitude, along −z_W in lift/shake
+  double settle_time_s = 0.05;        ///< settle: gravity off, preshape held
+  double squeeze_max_time_s = 0.5;    ///< close: squeeze stage time limit
+  double squeeze_min_time_s = 0.05;   ///< close: stall is not tested before this
+  /// close: actor joints slower than this × their |direction_speed| [rad/s or m/s]...
+  double stall_speed = 0.02;
+  double stall_time_s = 0.05;         ///< ...for this long have stalled
+  double lift_height_m = 0.10;        ///< lift: rise along +z_W...
+  double lift_time_s = 1.0;           ///< ...in this time (minimum-jerk profile)...
+  double lift_hold_s = 1.0;           ///< ...then hold
+  double shake_amplitude_m = 0.02;    ///< shake: ±amplitude along x_W, y_W, z_W in turn
+  double shake_frequency_hz = 2.0;
+  double shake_time_s = 1.0;          ///< per axis
+  double rock_angle_rad = 15.0 * M_PI / 180.0;  ///< then ±angle about x_W, y_W, z_W (GCP)
+  double rock_frequency_hz = 1.0;
+  double rock_time_s = 1.0;           ///< per axis
+  double gravity6_time_s = 1.0;       ///< gravity6: per direction ±x, ±y, ±z, hand fixed
+
+  // --- Outcome -----------------------------------------------------------------------------
+  double held_translation_m = 0.02;               ///< held: object moved less than this...
+  double held_rotation_rad = 15.0 * M_PI / 180.0;  ///< ...and turned less than this...
+  double contact_distance_m = 1e-3;  ///< ...and a hand–object contact this close remains
+  double unstable_speed_mps = 10.0;  ///< any body faster than this, or NaN = unstable
+  double drop_distance_m = 0.10;     ///< a phase stops early once the object is this far off
+};
+
+}  // namespace cordgrasp

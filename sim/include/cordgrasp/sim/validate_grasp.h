@@ -1,0 +1,102 @@
+#pragma once
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cordgrasp/core/grasp.h"
+#include "cordgrasp/core/hand_model.h"
+#include "cordgrasp/core/mesh.h"
+#include "cordgrasp/sim/sim_params.h"
+#include "cordgrasp/sim/sim_result.h"
+
+namespace cordgrasp {
+
+/// Which tests validate_grasp() runs after settle and close.
+struct SimTests {
+  bool lift = true;      ///< lift 10 cm in 1 s, hold 1 s (gravity −z_W)
+  bool shake = true;     ///< after lift: ±2 cm along x, y, z, then rock ±15° about x, y, z
+  bool gravity6 = true;  ///< from the closed grasp again: hand fixed, gravity ±x, ±y, ±z
+};
+
+/// Parses "lift,shake,gravity6" (any subset, comma separated). @throws std::invalid_argument.
+SimTests sim_tests_from_string(const std::string& text);
+
+/// "lift,shake,gravity6" for the enabled tests.
+std::string to_string(const SimTests& tests);
+
+/// World state at the end of a phase, for drawing (sim never depends on render).
+struct PhaseSnapshot {
+  std::string phase;                  ///< phase name (gravity6 segments: "gravity6 -x" etc.)
+  double sim_time_s = 0.0;            ///< simulated time since the world was built [s]
+  Eigen::Isometry3d X_WO = Eigen::Isometry3d::Identity();  ///< object in world
+  std::vector<Eigen::Isometry3d> X_WL;  ///< every HandModel link in world
+  Eigen::VectorXd q;                  ///< joint vector (one entry per HandModel joint)
+};
+
+/// Called at the end of every phase (and of every shake / gravity6 segment).
+using PhaseHook = std::function<void(const PhaseSnapshot&)>;
+
+/// Physics validation of a planned grasp (issue 5): settle, close (squeeze), then the tests —
+/// lift, shake (continuing from the lifted hand) and gravity6 (a fresh world closed again).
+/// Deterministic: the same inputs give the same result (wall times aside).
+/// @throws std::invalid_argument when the grasp's joint vectors do not fit the hand, the mesh
+/// has no triangle or the hand has no mass.
+SimResult validate_grasp(const Mesh& mesh, const HandModel& hand, const Grasp& grasp,
+                         const SimParams& params, const SimTests& tests = {},
+                         const PhaseHook& hook = {});
+
+/// The simulation behind validate_grasp(), one phase per call, for callers that want to
+/// interleave their own checks or drawing. Phases must run in protocol order (settle, close,
+/// then lift/shake or gravity6); each returns its PhaseResult. Not copyable; not thread-safe
+/// (one instance per thread; instances in different threads are independent).
+class GraspSimulation {
+ public:
+  /// Builds the world: object at X_WO (params.world_frame), hand base at X_WO·X_OB in preshape.
+  /// @throws std::invalid_argument as validate_grasp().
+  GraspSimulation(const Mesh& mesh, const HandModel& hand, const Grasp& grasp,
+                  const SimParams& params);
+  ~GraspSimulation();
+  GraspSimulation(const GraspSimulation&) = delete;
+  GraspSimulation& operator=(const GraspSimulation&) = delete;
+
+  /// Settle: gravity off, preshape held, hand at the planned pose, object at rest.
+  PhaseResult settle();
+  /// Close: reach — all driven joints follow minimum-jerk paths from the preshape to the plan,
+  /// arriving together; squeeze — actor joints are driven past the plan with their effort
+  /// limits until they stall or squeeze_max_time_s, the others hold the plan. Sets the
+  /// reference pose of the object in the hand. No contact at the end = kDropped.
+  PhaseResult close();
+  /// Lift: gravity −z_W; the hand rises lift_height_m in lift_time_s, then holds lift_hold_s.
+  PhaseResult lift();
+  /// Shake: gravity on; ±shake_amplitude_m along x_W, y_W, z_W (shake_time_s each), then rock
+  /// ±rock_angle_rad about x_W, y_W, z_W through the GCP (rock_time_s each). Starts and ends
+  /// at rest (faded sinusoids).
+  PhaseResult shake();
+  /// Gravity6: hand fixed; gravity along +x, −x, +y, −y, +z, −z of W for gravity6_time_s each.
+  PhaseResult gravity6();
+
+  /// Current world state labelled `phase`.
+  PhaseSnapshot snapshot(const std::string& phase) const;
+  /// The object as simulated (mass, shape, parts).
+  const SimObjectInfo& object_info() const;
+  /// Object frame in world at the start.
+  Eigen::Isometry3d X_WO_start() const;
+  /// Sets a hook called by shake() and gravity6() at the end of each segment.
+  void set_segment_hook(PhaseHook hook);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Link poses of the hand after building its btMultiBody (fixed joints merged, links at their
+/// principal inertia frames) for joint vector q with the root link at X_WB, read back from
+/// Bullet's forward kinematics: equal to link_poses() when the model is built right.
+std::vector<Eigen::Isometry3d> multibody_link_poses(const HandModel& hand,
+                                                    const Eigen::VectorXd& q,
+                                                    const Eigen::Isometry3d& X_WB);
+
+}  // namespace cordgrasp

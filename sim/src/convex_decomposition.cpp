@@ -1,0 +1,243 @@
+#include "cordgrasp/sim/convex_decomposition.h"
+
+#include <HACD/hacdHACD.h>
+
+#include <chrono>
+#include <cstdint>
+#include <array>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "cordgrasp/core/atomic_file.h"
+#include "cordgrasp/core/mesh_properties.h"
+
+namespace cordgrasp {
+
+namespace {
+
+/// HACD normalizes the mesh so that its bounding-box diagonal is 2 × this (HACD::m_scale).
+constexpr double kHacdScale = 1000.0;
+constexpr char kCacheMagic[8] = {'C', 'G', 'H', 'A', 'C', 'D', '1', '\n'};
+
+struct Fnv1a {
+  std::uint64_t h = 1469598103934665603ull;
+  void bytes(const void* data, size_t n) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < n; ++i) {
+      h ^= p[i];
+      h *= 1099511628211ull;
+    }
+  }
+  template <class T>
+  void value(const T& v) {
+    bytes(&v, sizeof(T));
+  }
+};
+
+std::string hex64(std::uint64_t v) {
+  static const char* digits = "0123456789abcdef";
+  std::string s(16, '0');
+  for (int i = 15; i >= 0; --i, v >>= 4) s[static_cast<size_t>(i)] = digits[v & 0xF];
+  return s;
+}
+
+/// Welds vertices with identical coordinates and drops zero-area triangles (HACD joins
+/// triangles through shared vertex indices).
+void weld(const Mesh& mesh, std::vector<HACD::Vec3<HACD::Real>>& points,
+          std::vector<HACD::Vec3<long>>& triangles) {
+  std::map<std::array<double, 3>, long> index;
+  std::vector<long> remap(mesh.vertices.size());
+  for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const Eigen::Vector3d& v = mesh.vertices[i];
+    const std::array<double, 3> key = {v.x(), v.y(), v.z()};
+    auto [it, inserted] = index.emplace(key, static_cast<long>(points.size()));
+    if (inserted) points.emplace_back(v.x(), v.y(), v.z());
+    remap[i] = it->second;
+  }
+  for (const Eigen::Vector3i& t : mesh.triangles) {
+    const long a = remap[static_cast<size_t>(t[0])];
+    const long b = remap[static_cast<size_t>(t[1])];
+    const long c = remap[static_cast<size_t>(t[2])];
+    if (a == b || b == c || a == c) continue;
+    const Eigen::Vector3d& pa = mesh.vertices[static_cast<size_t>(t[0])];
+    if ((mesh.vertices[static_cast<size_t>(t[1])] - pa)
+            .cross(mesh.vertices[static_cast<size_t>(t[2])] - pa)
+            .squaredNorm() <= 0.0)
+      continue;
+    triangles.emplace_back(a, b, c);
+  }
+}
+
+std::string params_text(const DecompositionParams& p) {
+  std::ostringstream s;
+  s.precision(17);
+  s << p.concavity << ' ' << p.min_parts << ' ' << p.max_hull_vertices << ' '
+    << p.compacity_weight << ' ' << p.volume_weight << ' ' << p.connect_distance << ' '
+    << p.add_extra_distance_points << ' ' << p.add_face_points;
+  return s.str();
+}
+
+std::string cache_key(const Mesh& mesh, const DecompositionParams& params) {
+  Fnv1a f;
+  const std::string text = params_text(params);
+  f.bytes(text.data(), text.size());
+  return mesh_hash(mesh) + "-" + hex64(f.h);
+}
+
+std::string serialize(const ConvexDecomposition& d) {
+  std::string out(kCacheMagic, sizeof(kCacheMagic));
+  auto put = [&out](const void* p, size_t n) {
+    out.append(static_cast<const char*>(p), n);
+  };
+  const std::uint32_t parts = static_cast<std::uint32_t>(d.parts.size());
+  put(&parts, sizeof(parts));
+  for (const auto& part : d.parts) {
+    const std::uint32_t n = static_cast<std::uint32_t>(part.size());
+    put(&n, sizeof(n));
+    for (const auto& v : part) put(v.data(), 3 * sizeof(double));
+  }
+  return out;
+}
+
+std::optional<ConvexDecomposition> deserialize(const std::string& bytes) {
+  size_t pos = 0;
+  auto get = [&](void* p, size_t n) {
+    if (pos + n > bytes.size()) return false;
+    std::memcpy(p, bytes.data() + pos, n);
+    pos += n;
+    return true;
+  };
+  char magic[sizeof(kCacheMagic)];
+  if (!get(magic, sizeof(magic)) || std::memcmp(magic, kCacheMagic, sizeof(magic)) != 0)
+    return std::nullopt;
+  std::uint32_t parts = 0;
+  if (!get(&parts, sizeof(parts)) || parts > 1000000) return std::nullopt;
+  ConvexDecomposition d;
+  d.parts.resize(parts);
+  for (auto& part : d.parts) {
+    std::uint32_t n = 0;
+    if (!get(&n, sizeof(n)) || n > 10000000) return std::nullopt;
+    part.resize(n);
+    for (auto& v : part)
+      if (!get(v.data(), 3 * sizeof(double))) return std::nullopt;
+  }
+  if (pos != bytes.size()) return std::nullopt;
+  return d;
+}
+
+/// HACD keeps process-wide state (gCancelRequest): one decomposition at a time.
+std::mutex& hacd_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+}  // namespace
+
+std::string mesh_hash(const Mesh& mesh) {
+  Fnv1a f;
+  const std::uint64_t nv = mesh.vertices.size();
+  const std::uint64_t nt = mesh.triangles.size();
+  f.value(nv);
+  for (const auto& v : mesh.vertices) f.bytes(v.data(), 3 * sizeof(double));
+  f.value(nt);
+  for (const auto& t : mesh.triangles) f.bytes(t.data(), 3 * sizeof(int));
+  return hex64(f.h);
+}
+
+ConvexDecomposition convex_decomposition(const Mesh& mesh, const DecompositionParams& params) {
+  if (mesh.triangles.empty() || mesh.vertices.empty())
+    throw std::invalid_argument("convex_decomposition: mesh '" + mesh.name +
+                                "' has no triangles");
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<HACD::Vec3<HACD::Real>> points;
+  std::vector<HACD::Vec3<long>> triangles;
+  weld(mesh, points, triangles);
+  ConvexDecomposition out;
+  if (triangles.size() >= 2) {
+    const std::lock_guard<std::mutex> lock(hacd_mutex());
+    HACD::HACD hacd;
+    hacd.SetPoints(points.data());
+    hacd.SetNPoints(points.size());
+    hacd.SetTriangles(triangles.data());
+    hacd.SetNTriangles(triangles.size());
+    hacd.SetScaleFactor(kHacdScale);
+    hacd.SetCompacityWeight(params.compacity_weight);
+    hacd.SetVolumeWeight(params.volume_weight);
+    hacd.SetNClusters(static_cast<size_t>(std::max(1, params.min_parts)));
+    hacd.SetNVerticesPerCH(static_cast<size_t>(std::max(4, params.max_hull_vertices)));
+    // HACD works on the mesh scaled to a bounding-box diagonal of 2·scale.
+    hacd.SetConcavity(params.concavity * 2.0 * kHacdScale);
+    hacd.SetConnectDist(params.connect_distance < 0.0 ? -1.0
+                                                      : params.connect_distance * 2.0 *
+                                                            kHacdScale);
+    hacd.SetAddExtraDistPoints(params.add_extra_distance_points);
+    hacd.SetAddFacesPoints(params.add_face_points);
+    hacd.SetAddNeighboursDistPoints(false);
+    if (hacd.Compute()) {
+      for (size_t c = 0; c < hacd.GetNClusters(); ++c) {
+        const size_t np = hacd.GetNPointsCH(c);
+        const size_t nt = hacd.GetNTrianglesCH(c);
+        if (np < 4) continue;
+        std::vector<HACD::Vec3<HACD::Real>> hp(np);
+        std::vector<HACD::Vec3<long>> ht(std::max<size_t>(nt, 1));
+        hacd.GetCH(c, hp.data(), ht.data());
+        std::vector<Eigen::Vector3d> part;
+        part.reserve(np);
+        for (const auto& p : hp) part.emplace_back(p.X(), p.Y(), p.Z());
+        out.parts.push_back(std::move(part));
+      }
+    }
+  }
+  if (out.parts.empty()) {  // HACD failed or the mesh is tiny: the whole mesh's hull
+    std::vector<Eigen::Vector3d> all(mesh.vertices.begin(), mesh.vertices.end());
+    out.parts.push_back(std::move(all));
+  }
+  out.compute_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+std::shared_ptr<const ConvexDecomposition> cached_convex_decomposition(
+    const Mesh& mesh, const DecompositionParams& params, const std::string& cache_dir) {
+  static std::mutex mutex;
+  static std::unordered_map<std::string, std::shared_ptr<const ConvexDecomposition>> memory;
+  const std::string key = cache_key(mesh, params);
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    auto it = memory.find(key);
+    if (it != memory.end()) {
+      auto copy = std::make_shared<ConvexDecomposition>(*it->second);
+      copy->from_cache = true;
+      copy->compute_s = 0.0;
+      return copy;
+    }
+  }
+  std::shared_ptr<ConvexDecomposition> result;
+  const std::string path = cache_dir.empty() ? std::string() : cache_dir + "/" + key + ".hacd";
+  if (!path.empty()) {
+    std::ifstream in(path, std::ios::binary);
+    if (in) {
+      std::ostringstream bytes;
+      bytes << in.rdbuf();
+      if (auto d = deserialize(bytes.str())) {
+        result = std::make_shared<ConvexDecomposition>(std::move(*d));
+        result->from_cache = true;
+      }
+    }
+  }
+  if (!result) {
+    result = std::make_shared<ConvexDecomposition>(convex_decomposition(mesh, params));
+    if (!path.empty()) write_file_atomically(path, serialize(*result));
+  }
+  const std::lock_guard<std::mutex> lock(mutex);
+  memory.emplace(key, result);
+  return result;
+}
+
+}  // namespace cordgrasp

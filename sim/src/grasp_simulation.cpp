@@ -1,0 +1,647 @@
+// The physics validation protocol (issue 5): world set-up, the base trajectory, joint servos,
+// and the phases settle, close, lift, shake and gravity6.
+#include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
+#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cmath>
+#include <stdexcept>
+
+#include "cordgrasp/core/kinematics.h"
+#include "cordgrasp/sim/validate_grasp.h"
+#include "hand_multibody.h"
+#include "object_body.h"
+
+namespace cordgrasp {
+
+namespace {
+
+using bullet::from_bt;
+using bullet::to_bt;
+
+constexpr int kObjectGroup = 1;
+constexpr int kHandGroup = 2;
+
+double angle_of(const Eigen::Matrix3d& R) { return Eigen::AngleAxisd(R).angle(); }
+
+/// Rotation vector (axis × angle) of R.
+Eigen::Vector3d rotation_vector(const Eigen::Matrix3d& R) {
+  const Eigen::AngleAxisd aa(R);
+  return aa.axis() * aa.angle();
+}
+
+/// Minimum-jerk profile s(τ) = 10τ³ − 15τ⁴ + 6τ⁵ on [0, 1], 0 before, 1 after.
+double min_jerk(double tau) {
+  if (tau <= 0.0) return 0.0;
+  if (tau >= 1.0) return 1.0;
+  return tau * tau * tau * (10.0 + tau * (-15.0 + 6.0 * tau));
+}
+
+/// Peak speed of the minimum-jerk profile relative to the mean speed.
+constexpr double kMinJerkPeakSpeed = 1.875;
+
+/// ds/dτ of min_jerk.
+double min_jerk_rate(double tau) {
+  if (tau <= 0.0 || tau >= 1.0) return 0.0;
+  return 30.0 * tau * tau * (1.0 - tau) * (1.0 - tau);
+}
+
+/// sin(2πft) faded in and out over a quarter period at both ends (sin² ramps), so the motion
+/// starts and ends at rest; 0 outside [0, T].
+double faded_sine(double t, double frequency_hz, double duration_s) {
+  if (t <= 0.0 || t >= duration_s) return 0.0;
+  const double ramp = std::min(0.25 / frequency_hz, 0.5 * duration_s);
+  double envelope = 1.0;
+  if (t < ramp) envelope = std::pow(std::sin(0.5 * M_PI * t / ramp), 2);
+  if (duration_s - t < ramp) envelope = std::pow(std::sin(0.5 * M_PI * (duration_s - t) / ramp), 2);
+  return envelope * std::sin(2.0 * M_PI * frequency_hz * t);
+}
+
+bool finite(const btVector3& v) {
+  return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+}
+
+}  // namespace
+
+const char* to_string(Outcome outcome) {
+  switch (outcome) {
+    case Outcome::kHeld: return "held";
+    case Outcome::kSlipped: return "slipped";
+    case Outcome::kDropped: return "dropped";
+    case Outcome::kUnstable: return "unstable";
+    case Outcome::kNotRun: return "not_run";
+  }
+  return "?";
+}
+
+const PhaseResult* SimResult::phase(const std::string& name) const {
+  for (const PhaseResult& p : phases)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+struct GraspSimulation::Impl {
+  HandModel hand;
+  Grasp grasp;
+  SimParams params;
+  double dt = 1.0 / 240.0;
+
+  std::unique_ptr<btDefaultCollisionConfiguration> config;
+  std::unique_ptr<btCollisionDispatcher> dispatcher;
+  std::unique_ptr<btDbvtBroadphase> broadphase;
+  std::unique_ptr<btMultiBodyConstraintSolver> solver;
+  std::unique_ptr<btMultiBodyDynamicsWorld> world;
+  std::unique_ptr<bullet::HandMultiBody> hand_body;
+  std::unique_ptr<bullet::ObjectBody> object;
+
+  Eigen::Isometry3d X_WO0 = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d X_WB_cmd = Eigen::Isometry3d::Identity();  ///< commanded root pose
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
+  double time_s = 0.0;
+
+  // Servo targets and speed caps, per HandModel joint.
+  Eigen::VectorXd q_target;
+  Eigen::VectorXd speed_cap;
+  Eigen::VectorXd qd_feedforward;  ///< added to the servo's commanded speed
+  /// Spring gain of compliant servos [N·m/rad or N/m]: the effort is capped at gain × error
+  /// (0: rigid servo, capped at the effort limit only).
+  Eigen::VectorXd spring_gain;
+  std::vector<int> actor_joints;     ///< driven joints of the actors
+  std::vector<double> actor_sign;    ///< +1/−1: direction that closes
+  std::vector<double> actor_speed;   ///< |direction_speed|
+
+  Eigen::Isometry3d X_BO_ref = Eigen::Isometry3d::Identity();  ///< object in hand root frame
+  bool closed = false;
+  PhaseHook segment_hook;
+
+  // Per-phase accumulators.
+  PhaseResult* current = nullptr;
+  bool blew_up = false;
+
+  Impl(const Mesh& mesh, const HandModel& h, const Grasp& g, const SimParams& p);
+  ~Impl();
+
+  Eigen::Isometry3d X_WB() const { return bullet::root_pose(*hand_body); }
+  Eigen::Isometry3d X_WO() const {
+    return from_bt(object->body->getCenterOfMassTransform()) * object->X_OC.inverse();
+  }
+  Eigen::Isometry3d X_BO() const { return X_WB().inverse() * X_WO(); }
+
+  void step(const Eigen::Isometry3d& X_WB_next);
+  void contacts(int& count, double& max_penetration) const;
+  bool unstable() const;
+  void begin(PhaseResult& r, const std::string& name);
+  /// Fills the pose change and contacts relative to `X_BO_reference`, classifies.
+  void finish(PhaseResult& r, const Eigen::Isometry3d& X_BO_reference,
+              std::chrono::steady_clock::time_point start);
+  Outcome classify(const PhaseResult& r) const;
+  /// Runs `duration` seconds along a root trajectory X_WB(t) (t from 0); returns false when the
+  /// phase must stop (blown up or the object is drop_distance_m off).
+  template <class Trajectory>
+  bool run(double duration, const Trajectory& trajectory);
+  double pose_change(const Eigen::Isometry3d& X_BO_reference, double* rotation) const;
+};
+
+GraspSimulation::Impl::Impl(const Mesh& mesh, const HandModel& h, const Grasp& g,
+                            const SimParams& p)
+    : hand(h), grasp(g), params(p), dt(p.time_step_s) {
+  const Eigen::Index n = static_cast<Eigen::Index>(hand.joints.size());
+  if (grasp.q.size() != n || grasp.q_preshape.size() != n)
+    throw std::invalid_argument("validate_grasp: grasp joint vectors have " +
+                                std::to_string(grasp.q.size()) + "/" +
+                                std::to_string(grasp.q_preshape.size()) + " entries, hand '" +
+                                hand.name + "' has " + std::to_string(n) + " joints");
+  if (!(dt > 0.0)) throw std::invalid_argument("validate_grasp: time_step_s must be positive");
+  grasp.q = clamp_to_limits(hand, apply_couplings(hand, grasp.q));
+  grasp.q_preshape = clamp_to_limits(hand, apply_couplings(hand, grasp.q_preshape));
+
+  config = std::make_unique<btDefaultCollisionConfiguration>();
+  dispatcher = std::make_unique<btCollisionDispatcher>(config.get());
+  btGImpactCollisionAlgorithm::registerAlgorithm(dispatcher.get());
+  broadphase = std::make_unique<btDbvtBroadphase>();
+  solver = std::make_unique<btMultiBodyConstraintSolver>();
+  world = std::make_unique<btMultiBodyDynamicsWorld>(dispatcher.get(), broadphase.get(),
+                                                     solver.get(), config.get());
+  btContactSolverInfo& si = world->getSolverInfo();
+  si.m_numIterations = params.solver_iterations;
+  si.m_erp = params.erp;
+  si.m_erp2 = params.erp;
+  si.m_frictionERP = params.friction_erp;
+  si.m_globalCfm = params.cfm;
+  si.m_linearSlop = params.linear_slop_m;
+  si.m_splitImpulse = false;
+  si.m_timeStep = dt;
+  si.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+  if (!params.cone_friction) si.m_solverMode |= SOLVER_DISABLE_IMPLICIT_CONE_FRICTION;
+  si.m_leastSquaresResidualThreshold = params.solver_residual_threshold;
+  world->setGravity(btVector3(0, 0, 0));
+
+  // Object.
+  object = bullet::make_object_body(mesh, params);
+  const Eigen::Isometry3d X_OB = grasp.X_OB;
+  if (params.world_frame == WorldFrame::kApproachDown) {
+    // GCP frame G: +z_G down, x_G = x_W (R_WG = diag(1, −1, −1)), GCP at the world origin.
+    const Eigen::Isometry3d X_OG =
+        X_OB * root_pose_for_gcp(hand, grasp.q_preshape, Eigen::Isometry3d::Identity()).inverse();
+    Eigen::Isometry3d X_WG = Eigen::Isometry3d::Identity();
+    X_WG.linear() = Eigen::Vector3d(1, -1, -1).asDiagonal();
+    X_WO0 = X_WG * X_OG.inverse();
+  }
+  object->body->setCenterOfMassTransform(to_bt(Eigen::Isometry3d(X_WO0 * object->X_OC)));
+  object->body->setLinearVelocity(btVector3(0, 0, 0));
+  object->body->setAngularVelocity(btVector3(0, 0, 0));
+  world->addRigidBody(object->body.get(), kObjectGroup, kHandGroup);
+
+  // Hand.
+  bullet::HandBodyParams hp;
+  hp.shapes.link_margin_m = params.link_margin_m;
+  hp.time_step_s = dt;
+  hp.default_effort_Nm = params.default_effort_Nm;
+  hp.default_effort_N = params.default_effort_N;
+  hp.effort_scale = params.effort_scale;
+  hp.gear_erp = params.gear_erp;
+  hp.base_max_force_N = params.base_max_force_N;
+  hand_body = bullet::make_hand_multibody(hand, hp);
+  X_WB_cmd = X_WO0 * X_OB;
+  bullet::place_hand(*hand_body, X_WB_cmd, grasp.q_preshape);
+  bullet::add_hand_to_world(*hand_body, *world, kHandGroup, kObjectGroup);
+
+  // Actor joints (the closing ones) and their closing directions.
+  for (const Actor& actor : hand.actors)
+    for (const Actor::Entry& e : actor.joints) {
+      if (e.joint < 0 || e.joint >= static_cast<int>(n) || e.direction_speed == 0.0) continue;
+      actor_joints.push_back(e.joint);
+      actor_sign.push_back(e.direction_speed > 0.0 ? 1.0 : -1.0);
+      actor_speed.push_back(std::abs(e.direction_speed));
+    }
+  q_target = grasp.q_preshape;
+  qd_feedforward = Eigen::VectorXd::Zero(n);
+  spring_gain = Eigen::VectorXd::Zero(n);
+  speed_cap = Eigen::VectorXd::Constant(n, params.hold_speed);
+  for (Eigen::Index j = 0; j < n; ++j)
+    if (hand.joints[static_cast<size_t>(j)].type == JointType::kPrismatic)
+      speed_cap[j] = 0.1 * params.hold_speed;
+}
+
+GraspSimulation::Impl::~Impl() {
+  if (world) {
+    if (hand_body) bullet::remove_hand_from_world(*hand_body, *world);
+    if (object) world->removeRigidBody(object->body.get());
+  }
+  world.reset();
+}
+
+void GraspSimulation::Impl::step(const Eigen::Isometry3d& X_WB_next) {
+  btMultiBody& mb = *hand_body->mb;
+  // Base: the velocity that reaches the commanded pose in one step (the solver sees it as
+  // velocity), held there by the fixed constraint whose world frame is moved along.
+  const Eigen::Isometry3d X_CR = hand_body->X_CL[static_cast<size_t>(hand.root_link)];
+  const Eigen::Isometry3d X_WC_next = X_WB_next * X_CR.inverse();
+  const Eigen::Isometry3d X_WC = bullet::body_pose(*hand_body, 0);
+  const Eigen::Vector3d v = (X_WC_next.translation() - X_WC.translation()) / dt;
+  const Eigen::Vector3d w =
+      rotation_vector(X_WC_next.linear() * X_WC.linear().transpose()) / dt;
+  mb.setBaseVel(to_bt(v));
+  mb.setBaseOmega(to_bt(w));
+  hand_body->base_hold->setPivotInB(to_bt(Eigen::Vector3d(X_WC_next.translation())));
+  const Eigen::Matrix3d R = X_WC_next.linear();
+  hand_body->base_hold->setFrameInB(btMatrix3x3(R(0, 0), R(0, 1), R(0, 2), R(1, 0), R(1, 1),
+                                                R(1, 2), R(2, 0), R(2, 1), R(2, 2)));
+  X_WB_cmd = X_WB_next;
+
+  // Joint servos: speed toward the target, capped; the motor's impulse cap is the effort limit.
+  for (size_t k = 0; k < hand_body->motors.size(); ++k) {
+    const int j = hand_body->motor_joint[k];
+    const int i = hand_body->joint_mb_link[static_cast<size_t>(j)];
+    const double error = q_target[j] - mb.getJointPos(i);
+    const double cap = speed_cap[j];
+    const double speed =
+        std::clamp(qd_feedforward[j] + params.servo_gain_per_s * error, -cap, cap);
+    hand_body->motors[k]->setVelocityTarget(speed, 1.0);
+    double effort = hand_body->effort_limit[static_cast<size_t>(j)];
+    if (spring_gain[j] > 0.0) effort = std::min(effort, spring_gain[j] * std::abs(error));
+    hand_body->motors[k]->setMaxAppliedImpulse(effort * dt);
+  }
+
+  // Gravity compensation of the hand (the world adds m·g to every link).
+  if (params.hand_gravity_compensation && gravity.squaredNorm() > 0.0) {
+    mb.addBaseForce(to_bt(Eigen::Vector3d(-hand_body->body_mass_kg[0] * gravity)));
+    for (int i = 0; i < mb.getNumLinks(); ++i)
+      mb.addLinkForce(i, to_bt(Eigen::Vector3d(-hand_body->body_mass_kg[static_cast<size_t>(i + 1)] *
+                                               gravity)));
+  }
+  world->stepSimulation(dt, 0, dt);
+  time_s += dt;
+
+  if (current) {
+    ++current->steps;
+    current->sim_time_s += dt;
+    int count = 0;
+    double penetration = 0.0;
+    contacts(count, penetration);
+    current->max_contact_count = std::max(current->max_contact_count, count);
+    current->max_penetration_m = std::max(current->max_penetration_m, penetration);
+  }
+  if (unstable()) blew_up = true;
+}
+
+void GraspSimulation::Impl::contacts(int& count, double& max_penetration) const {
+  count = 0;
+  max_penetration = 0.0;
+  const btCollisionObject* obj = object->body.get();
+  const int manifolds = dispatcher->getNumManifolds();
+  for (int m = 0; m < manifolds; ++m) {
+    const btPersistentManifold* pm = dispatcher->getManifoldByIndexInternal(m);
+    if (pm->getBody0() != obj && pm->getBody1() != obj) continue;
+    for (int c = 0; c < pm->getNumContacts(); ++c) {
+      const double d = pm->getContactPoint(c).getDistance();
+      if (d < params.contact_distance_m) ++count;
+      max_penetration = std::max(max_penetration, -d);
+    }
+  }
+}
+
+bool GraspSimulation::Impl::unstable() const {
+  const btRigidBody& o = *object->body;
+  const btMultiBody& mb = *hand_body->mb;
+  if (!finite(o.getCenterOfMassPosition()) || !finite(o.getLinearVelocity()) ||
+      !finite(o.getAngularVelocity()) || !finite(mb.getBasePos()) || !finite(mb.getBaseVel()))
+    return true;
+  for (int i = 0; i < mb.getNumLinks(); ++i)
+    if (!std::isfinite(mb.getJointPos(i)) || !std::isfinite(mb.getJointVel(i))) return true;
+  const double limit = params.unstable_speed_mps;
+  if (o.getLinearVelocity().length() > limit || mb.getBaseVel().length() > limit) return true;
+  // Link speeds: joint speed × a 0.2 m lever bounds a finger link's speed.
+  for (int i = 0; i < mb.getNumLinks(); ++i) {
+    const double qd = std::abs(mb.getJointVel(i));
+    const bool prismatic = mb.getLink(i).m_jointType == btMultibodyLink::ePrismatic;
+    if ((prismatic ? qd : 0.2 * qd) > limit) return true;
+  }
+  return false;
+}
+
+double GraspSimulation::Impl::pose_change(const Eigen::Isometry3d& X_BO_reference,
+                                          double* rotation) const {
+  // Object motion relative to the hand, measured at the object's centre of mass.
+  const Eigen::Isometry3d X_BO_now = X_BO();
+  const Eigen::Vector3d com_O = object->X_OC.translation();
+  const double translation = ((X_BO_now * com_O) - (X_BO_reference * com_O)).norm();
+  if (rotation) *rotation = angle_of(X_BO_reference.linear().transpose() * X_BO_now.linear());
+  return translation;
+}
+
+void GraspSimulation::Impl::begin(PhaseResult& r, const std::string& name) {
+  r = PhaseResult{};
+  r.name = name;
+  current = &r;
+}
+
+Outcome GraspSimulation::Impl::classify(const PhaseResult& r) const {
+  if (blew_up) return Outcome::kUnstable;
+  if (!r.in_contact) return Outcome::kDropped;
+  if (r.translation_m < params.held_translation_m && r.rotation_rad < params.held_rotation_rad)
+    return Outcome::kHeld;
+  return Outcome::kSlipped;
+}
+
+void GraspSimulation::Impl::finish(PhaseResult& r, const Eigen::Isometry3d& X_BO_reference,
+                                   std::chrono::steady_clock::time_point start) {
+  current = nullptr;
+  if (!blew_up) {
+    r.translation_m = pose_change(X_BO_reference, &r.rotation_rad);
+    r.max_translation_m = std::max(r.max_translation_m, r.translation_m);
+    double penetration = 0.0;
+    contacts(r.contact_count, penetration);
+    r.in_contact = r.contact_count > 0;
+  }
+  r.outcome = classify(r);
+  r.joint_efforts.assign(hand.joints.size(), 0.0);
+  for (size_t k = 0; k < hand_body->motors.size(); ++k)
+    r.joint_efforts[static_cast<size_t>(hand_body->motor_joint[k])] =
+        hand_body->motors[k]->getAppliedImpulse(0) / dt;
+  for (size_t k = 0; k < hand_body->gears.size(); ++k)
+    r.joint_efforts[static_cast<size_t>(hand_body->gear_joint[k])] =
+        hand_body->gears[k]->getAppliedImpulse(0) / dt;
+  r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <class Trajectory>
+bool GraspSimulation::Impl::run(double duration, const Trajectory& trajectory) {
+  const int steps = static_cast<int>(std::lround(duration / dt));
+  for (int s = 1; s <= steps; ++s) {
+    step(trajectory(s * dt));
+    if (blew_up) return false;
+    if (closed && current) {
+      const double moved = pose_change(X_BO_ref, nullptr);
+      current->max_translation_m = std::max(current->max_translation_m, moved);
+      if (moved > params.drop_distance_m) return false;
+    }
+  }
+  return true;
+}
+
+GraspSimulation::GraspSimulation(const Mesh& mesh, const HandModel& hand, const Grasp& grasp,
+                                 const SimParams& params)
+    : impl_(std::make_unique<Impl>(mesh, hand, grasp, params)) {}
+
+GraspSimulation::~GraspSimulation() = default;
+
+PhaseResult GraspSimulation::settle() {
+  Impl& s = *impl_;
+  const auto start = std::chrono::steady_clock::now();
+  PhaseResult r;
+  s.begin(r, "settle");
+  s.gravity.setZero();
+  s.world->setGravity(btVector3(0, 0, 0));
+  s.q_target = s.grasp.q_preshape;
+  const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
+  const Eigen::Isometry3d X_BO_plan = s.grasp.X_OB.inverse();
+  s.run(s.params.settle_time_s, [&](double) { return X_WB0; });
+  s.finish(r, X_BO_plan, start);
+  // At rest in preshape the hand need not touch the object: settle only fails by blowing up
+  // or by pushing the object away.
+  if (r.outcome == Outcome::kDropped || r.outcome == Outcome::kSlipped)
+    r.outcome = r.translation_m < s.params.held_translation_m ? Outcome::kHeld : Outcome::kSlipped;
+  return r;
+}
+
+PhaseResult GraspSimulation::close() {
+  Impl& s = *impl_;
+  const auto start = std::chrono::steady_clock::now();
+  PhaseResult r;
+  s.begin(r, "close");
+  s.gravity.setZero();
+  s.world->setGravity(btVector3(0, 0, 0));
+  const int n = static_cast<int>(s.hand.joints.size());
+  // Reach: every driven joint follows a minimum-jerk path from where it is to the plan, all
+  // arriving together, so the fingers meet the object at once at the planned contacts.
+  const Eigen::VectorXd q0 = bullet::hand_joint_positions(*s.hand_body, n);
+  Eigen::VectorXd close_cap = Eigen::VectorXd::Constant(n, s.params.hold_speed);
+  for (int j = 0; j < n; ++j)
+    if (s.hand.joints[static_cast<size_t>(j)].type == JointType::kPrismatic)
+      close_cap[j] = 0.1 * s.params.hold_speed;
+  for (size_t a = 0; a < s.actor_joints.size(); ++a) {
+    const int j = s.actor_joints[a];
+    double cap = s.params.close_speed * s.actor_speed[a];
+    const double limit = s.hand.joints[static_cast<size_t>(j)].velocity_limit;
+    if (limit > 0.0) cap = std::min(cap, limit);
+    close_cap[j] = cap;
+  }
+  double reach_s = s.dt;
+  for (int j = 0; j < n; ++j)
+    if (s.hand.joints[static_cast<size_t>(j)].is_moving() && !s.hand.joints[static_cast<size_t>(j)].mimic)
+      reach_s = std::max(reach_s, kMinJerkPeakSpeed * std::abs(s.grasp.q[j] - q0[j]) / close_cap[j]);
+  // Tracking needs headroom over the path's peak speed.
+  s.speed_cap = 2.0 * close_cap;
+  const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
+  const int reach_steps = static_cast<int>(std::ceil(reach_s / s.dt));
+  for (int k = 1; k <= reach_steps && !s.blew_up; ++k) {
+    const double tau = static_cast<double>(k) / reach_steps;
+    s.q_target = q0 + (s.grasp.q - q0) * min_jerk(tau);
+    s.qd_feedforward = (s.grasp.q - q0) * (min_jerk_rate(tau) / (reach_steps * s.dt));
+    s.step(X_WB0);
+  }
+  s.qd_feedforward.setZero();
+  if (std::getenv("CG_DEBUG")) {
+    double rot = 0;
+    const double dx = s.pose_change(s.grasp.X_OB.inverse(), &rot);
+    int c = 0; double pen = 0; s.contacts(c, pen);
+    const Eigen::VectorXd q = bullet::hand_joint_positions(*s.hand_body, n);
+    fprintf(stderr, "reach %d steps: dx %g rot %g contacts %d pen %g |q-qplan| %g\n", reach_steps, dx, rot, c, pen, (q - s.grasp.q).cwiseAbs().maxCoeff());
+  }
+  // Squeeze: actor joints are driven past the plan with their effort limits until they stall;
+  // the other joints hold the plan.
+  s.q_target = s.grasp.q;
+  s.speed_cap = close_cap;
+  for (size_t a = 0; a < s.actor_joints.size(); ++a) {
+    const int j = s.actor_joints[a];
+    const Joint& joint = s.hand.joints[static_cast<size_t>(j)];
+    const double squeeze =
+        joint.type == JointType::kPrismatic ? s.params.squeeze_m : s.params.squeeze_rad;
+    double target = s.grasp.q[j] + s.actor_sign[a] * squeeze;
+    if (joint.type != JointType::kContinuous) target = std::clamp(target, joint.lower, joint.upper);
+    s.q_target[j] = target;
+    // Compliant squeeze: full effort at the squeeze distance, proportionally less nearer, so
+    // fingers pushing against each other through the object find a balance.
+    s.spring_gain[j] = s.hand_body->effort_limit[static_cast<size_t>(j)] / squeeze;
+  }
+  const int max_steps = static_cast<int>(std::lround(s.params.squeeze_max_time_s / s.dt));
+  const int min_steps = static_cast<int>(std::lround(s.params.squeeze_min_time_s / s.dt));
+  const int stall_steps = std::max(1, static_cast<int>(std::lround(s.params.stall_time_s / s.dt)));
+  int stalled = 0;
+  for (int k = 1; k <= max_steps && !s.blew_up; ++k) {
+    s.step(X_WB0);
+    const Eigen::VectorXd qd = bullet::hand_joint_velocities(*s.hand_body, n);
+    bool still = true;
+    for (size_t a = 0; a < s.actor_joints.size(); ++a)
+      if (std::abs(qd[s.actor_joints[a]]) > s.params.stall_speed * s.actor_speed[a]) still = false;
+    stalled = still ? stalled + 1 : 0;
+    if (std::getenv("CG_DEBUG") && k % 10 == 0) {
+      double rot = 0;
+      const double dx = s.pose_change(s.grasp.X_OB.inverse(), &rot);
+      const Eigen::VectorXd q = bullet::hand_joint_positions(*s.hand_body, n);
+      fprintf(stderr, "  squeeze %d dx %.4f rot %.3f |", k, dx, rot);
+      for (size_t a = 0; a < s.actor_joints.size(); ++a) { int j = s.actor_joints[a]; fprintf(stderr, " %s %.3f->%.3f (%.2f)", s.hand.joints[j].name.c_str(), q[j], s.q_target[j], qd[j]); }
+      fprintf(stderr, "\n    contacts:");
+      for (int m = 0; m < s.dispatcher->getNumManifolds(); ++m) {
+        const btPersistentManifold* pm = s.dispatcher->getManifoldByIndexInternal(m);
+        if (pm->getNumContacts() == 0) continue;
+        const btCollisionObject* other = pm->getBody0() == s.object->body.get() ? pm->getBody1() : pm->getBody0();
+        for (size_t b = 0; b < s.hand_body->colliders.size(); ++b) if (s.hand_body->colliders[b].get() == other) {
+          for (size_t l = 0; l < s.hand.links.size(); ++l) if (s.hand_body->link_body[l] == (int)b && !s.hand.links[l].collisions.empty()) fprintf(stderr, " %s(%d,%.4f)", s.hand.links[l].name.c_str(), pm->getNumContacts(), pm->getContactPoint(0).getDistance());
+        }
+      }
+      const btVector3 v = s.object->body->getLinearVelocity();
+      fprintf(stderr, " | v %.3f %.3f %.3f\n", v.x(), v.y(), v.z());
+    }
+    if (k >= min_steps && stalled >= stall_steps) break;
+  }
+  s.finish(r, s.grasp.X_OB.inverse(), start);
+  // Closing is judged by contact only; the object may well move while the fingers close.
+  if (r.outcome == Outcome::kSlipped) r.outcome = Outcome::kHeld;
+  s.X_BO_ref = s.X_BO();
+  s.closed = true;
+  // From now on the servos keep squeezing toward the same targets.
+  return r;
+}
+
+PhaseResult GraspSimulation::lift() {
+  Impl& s = *impl_;
+  const auto start = std::chrono::steady_clock::now();
+  PhaseResult r;
+  s.begin(r, "lift");
+  s.gravity = Eigen::Vector3d(0, 0, -s.params.gravity_mps2);
+  s.world->setGravity(to_bt(s.gravity));
+  const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
+  const double h = s.params.lift_height_m;
+  const double T = s.params.lift_time_s;
+  s.run(T + s.params.lift_hold_s, [&](double t) {
+    Eigen::Isometry3d X = X_WB0;
+    X.translation().z() += h * min_jerk(t / T);
+    return X;
+  });
+  s.finish(r, s.X_BO_ref, start);
+  return r;
+}
+
+PhaseResult GraspSimulation::shake() {
+  Impl& s = *impl_;
+  const auto start = std::chrono::steady_clock::now();
+  PhaseResult r;
+  s.begin(r, "shake");
+  s.gravity = Eigen::Vector3d(0, 0, -s.params.gravity_mps2);
+  s.world->setGravity(to_bt(s.gravity));
+  static const char* kAxes[3] = {"x", "y", "z"};
+  // Ends a segment: hook, then held or not (the phase stops at the first failing segment).
+  auto segment_held = [&](const std::string& name, bool ran) {
+    if (s.segment_hook) s.segment_hook(snapshot("shake " + name));
+    PhaseResult probe = r;
+    if (!s.blew_up) {
+      probe.translation_m = s.pose_change(s.X_BO_ref, &probe.rotation_rad);
+      double penetration = 0.0;
+      s.contacts(probe.contact_count, penetration);
+      probe.in_contact = probe.contact_count > 0;
+    }
+    if (ran && s.classify(probe) == Outcome::kHeld) return true;
+    r.detail = "shake " + name;
+    return false;
+  };
+  bool ok = true;
+  for (int a = 0; a < 3 && ok; ++a) {
+    const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
+    const Eigen::Vector3d axis = Eigen::Vector3d::Unit(a);
+    const double A = s.params.shake_amplitude_m;
+    const double f = s.params.shake_frequency_hz;
+    const double T = s.params.shake_time_s;
+    const bool ran = s.run(T, [&](double t) {
+      Eigen::Isometry3d X = X_WB0;
+      X.translation() += A * faded_sine(t, f, T) * axis;
+      return X;
+    });
+    ok = segment_held(kAxes[a], ran);
+  }
+  for (int a = 0; a < 3 && ok; ++a) {
+    const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
+    // Rock about the GCP (the held object sits around it).
+    const Eigen::Vector3d pivot =
+        gcp_pose(s.hand, link_poses(s.hand, s.grasp.q, X_WB0)).translation();
+    const Eigen::Vector3d axis = Eigen::Vector3d::Unit(a);
+    const double Theta = s.params.rock_angle_rad;
+    const double f = s.params.rock_frequency_hz;
+    const double T = s.params.rock_time_s;
+    const bool ran = s.run(T, [&](double t) {
+      const Eigen::Matrix3d R =
+          Eigen::AngleAxisd(Theta * faded_sine(t, f, T), axis).toRotationMatrix();
+      Eigen::Isometry3d M = Eigen::Isometry3d::Identity();
+      M.linear() = R;
+      M.translation() = pivot - R * pivot;
+      return Eigen::Isometry3d(M * X_WB0);
+    });
+    ok = segment_held(std::string("rock ") + kAxes[a], ran);
+  }
+  s.finish(r, s.X_BO_ref, start);
+  return r;
+}
+
+PhaseResult GraspSimulation::gravity6() {
+  Impl& s = *impl_;
+  const auto start = std::chrono::steady_clock::now();
+  PhaseResult r;
+  s.begin(r, "gravity6");
+  static const char* kNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+  const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
+  for (int d = 0; d < 6; ++d) {
+    Eigen::Vector3d g = Eigen::Vector3d::Zero();
+    g[d / 2] = (d % 2 == 0 ? 1.0 : -1.0) * s.params.gravity_mps2;
+    s.gravity = g;
+    s.world->setGravity(to_bt(g));
+    bool ok = s.run(s.params.gravity6_time_s, [&](double) { return X_WB0; });
+    if (s.segment_hook) s.segment_hook(snapshot(std::string("gravity6 ") + kNames[d]));
+    PhaseResult probe = r;
+    if (!s.blew_up) {
+      probe.translation_m = s.pose_change(s.X_BO_ref, &probe.rotation_rad);
+      double penetration = 0.0;
+      s.contacts(probe.contact_count, penetration);
+      probe.in_contact = probe.contact_count > 0;
+    }
+    if (!ok || s.classify(probe) != Outcome::kHeld) {
+      r.detail = std::string("gravity ") + kNames[d];
+      break;
+    }
+  }
+  s.finish(r, s.X_BO_ref, start);
+  s.gravity.setZero();
+  s.world->setGravity(btVector3(0, 0, 0));
+  return r;
+}
+
+PhaseSnapshot GraspSimulation::snapshot(const std::string& phase) const {
+  const Impl& s = *impl_;
+  PhaseSnapshot out;
+  out.phase = phase;
+  out.sim_time_s = s.time_s;
+  out.X_WO = s.X_WO();
+  out.X_WL = bullet::hand_link_poses(*s.hand_body);
+  out.q = bullet::hand_joint_positions(*s.hand_body, static_cast<int>(s.hand.joints.size()));
+  return out;
+}
+
+const SimObjectInfo& GraspSimulation::object_info() const { return impl_->object->info; }
+
+Eigen::Isometry3d GraspSimulation::X_WO_start() const { return impl_->X_WO0; }
+
+void GraspSimulation::set_segment_hook(PhaseHook hook) { impl_->segment_hook = std::move(hook); }
+
+std::vector<Eigen::Isometry3d> multibody_link_poses(const HandModel& hand,
+                                                    const Eigen::VectorXd& q,
+                                                    const Eigen::Isometry3d& X_WB) {
+  if (q.size() != static_cast<Eigen::Index>(hand.joints.size()))
+    throw std::invalid_argument("multibody_link_poses: q has the wrong size");
+  auto body = bullet::make_hand_multibody(hand, bullet::HandBodyParams{});
+  bullet::place_hand(*body, X_WB, q);
+  return bullet::hand_link_poses(*body);
+}
+
+}  // namespace cordgrasp

@@ -1,0 +1,88 @@
+#pragma once
+// sim-internal: HandModel → btMultiBody (issue 5). Links joined by fixed joints are merged into
+// one body; every body's frame is its principal inertia frame at its centre of mass (Bullet
+// wants diagonal inertias). Collision shapes come from bullet_shapes (the planner's shapes).
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyFixedConstraint.h>
+#include <BulletDynamics/Featherstone/btMultiBodyGearConstraint.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
+
+#include <memory>
+#include <vector>
+
+#include "bullet_shapes.h"
+#include "cordgrasp/core/hand_model.h"
+
+namespace cordgrasp::bullet {
+
+/// How the hand multibody is built.
+struct HandBodyParams {
+  ShapeParams shapes;                ///< link margins (the planner's shapes)
+  double time_step_s = 1.0 / 240.0;  ///< motor impulse caps are effort × time step
+  double default_effort_Nm = 2.0;    ///< revolute joints without an effort limit [N·m]
+  double default_effort_N = 50.0;    ///< prismatic joints without an effort limit [N]
+  double effort_scale = 1.0;         ///< multiplies every effort limit
+  double gear_erp = 0.5;             ///< mimic gear constraints' error reduction
+  double base_max_force_N = 2000.0;  ///< force cap of the constraint carrying the base [N]
+  double link_friction = 1.0;        ///< Bullet friction of the links (× the object's)
+};
+
+/// A hand as a btMultiBody with its colliders and constraints. Bodies: 0 = base (the root
+/// link's group), b ≥ 1 = multibody link b − 1.
+struct HandMultiBody {
+  std::unique_ptr<btMultiBody> mb;
+  int root_link = 0;                    ///< HandModel root link (in body 0)
+  std::vector<int> link_body;           ///< HandModel link → body
+  std::vector<Eigen::Isometry3d> X_CL;  ///< HandModel link frame in its body's COM frame C
+  std::vector<int> joint_mb_link;       ///< HandModel joint → multibody link, -1 when merged
+  std::vector<int> mb_link_joint;       ///< multibody link → HandModel joint
+  std::vector<LinkShape> shapes;        ///< per body (compound nullptr: no geometry)
+  std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders;  ///< per body, may be null
+  std::vector<std::unique_ptr<btMultiBodyJointLimitConstraint>> limits;
+  std::vector<std::unique_ptr<btMultiBodyGearConstraint>> gears;  ///< mimic couplings
+  std::vector<int> gear_joint;          ///< slave HandModel joint of each gear
+  std::vector<std::unique_ptr<btMultiBodyJointMotor>> motors;  ///< one per driven joint
+  std::vector<int> motor_joint;         ///< HandModel joint of each motor
+  std::vector<int> joint_motor;         ///< HandModel joint → motor index, -1 when none
+  std::vector<double> effort_limit;     ///< per HandModel joint, defaults and scale applied
+  std::unique_ptr<btMultiBodyFixedConstraint> base_hold;  ///< carries the base (world frame)
+  std::vector<double> body_mass_kg;     ///< per body
+  double total_mass_kg = 0.0;
+};
+
+/// Builds the multibody (not yet in a world). @throws std::invalid_argument when the hand has
+/// no links or a joint's parent is unknown.
+std::unique_ptr<HandMultiBody> make_hand_multibody(const HandModel& hand,
+                                                   const HandBodyParams& params);
+
+/// Puts the root link at X_WB and the joints at q (one entry per HandModel joint), velocities
+/// zero, colliders updated. Meant for initial placement only: the simulation moves the base
+/// through base_hold.
+void place_hand(HandMultiBody& body, const Eigen::Isometry3d& X_WB, const Eigen::VectorXd& q);
+
+/// World pose of body b's COM frame.
+Eigen::Isometry3d body_pose(const HandMultiBody& body, int b);
+
+/// World pose of the root link.
+Eigen::Isometry3d root_pose(const HandMultiBody& body);
+
+/// World poses of every HandModel link, from Bullet's state.
+std::vector<Eigen::Isometry3d> hand_link_poses(const HandMultiBody& body);
+
+/// Joint vector from Bullet (merged fixed joints: 0), one entry per HandModel joint.
+Eigen::VectorXd hand_joint_positions(const HandMultiBody& body, int num_joints);
+
+/// Joint velocities, one entry per HandModel joint (fixed: 0).
+Eigen::VectorXd hand_joint_velocities(const HandMultiBody& body, int num_joints);
+
+/// Adds the multibody, its colliders (group/mask as given) and constraints to the world.
+void add_hand_to_world(HandMultiBody& body, btMultiBodyDynamicsWorld& world, int group,
+                       int mask);
+
+/// Removes everything add_hand_to_world() added.
+void remove_hand_from_world(HandMultiBody& body, btMultiBodyDynamicsWorld& world);
+
+}  // namespace cordgrasp::bullet

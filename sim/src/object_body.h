@@ -1,0 +1,49 @@
+#pragma once
+// sim-internal: the object as a dynamic btRigidBody (issue 5): a convex hull, a HACD compound
+// or a btGImpactMeshShape; mass from density × volume, inertia from the collision shape; the
+// body frame C is the principal inertia frame at the centre of mass.
+#include <BulletCollision/Gimpact/btGImpactShape.h>
+#include <BulletDynamics/Dynamics/btRigidBody.h>
+#include <btBulletCollisionCommon.h>
+
+#include <memory>
+#include <vector>
+
+#include "cordgrasp/core/mesh.h"
+#include "cordgrasp/sim/sim_params.h"
+#include "cordgrasp/sim/sim_result.h"
+
+namespace cordgrasp::bullet {
+
+struct ObjectBody {
+  SimObjectInfo info;
+  Eigen::Isometry3d X_OC = Eigen::Isometry3d::Identity();  ///< body frame in object frame
+  std::vector<std::unique_ptr<btConvexHullShape>> hulls;   ///< parts, points in C
+  std::unique_ptr<btCompoundShape> compound;               ///< several parts
+  std::vector<btScalar> vertices;                          ///< GImpact vertex array (C)
+  std::vector<int> indices;                                ///< GImpact triangles
+  std::unique_ptr<btTriangleIndexVertexArray> mesh_interface;
+  std::unique_ptr<btGImpactMeshShape> gimpact;
+  btCollisionShape* shape = nullptr;  ///< the one the body uses
+  std::unique_ptr<btRigidBody> body;
+};
+
+/// Mass properties of a uniform solid of density 1 bounded by outward-oriented triangles.
+struct UnitSolid {
+  double volume_m3 = 0.0;
+  Eigen::Vector3d com = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  ///< about com, per unit density
+};
+
+/// Volume integrals over closed, consistently oriented triangles (signed tetrahedra).
+UnitSolid unit_solid(const std::vector<Eigen::Vector3d>& vertices,
+                     const std::vector<Eigen::Vector3i>& triangles);
+
+/// The solid convex hull of points (btConvexHullComputer); empty for flat input.
+UnitSolid convex_hull_solid(const std::vector<Eigen::Vector3d>& points);
+
+/// Builds the object body at the identity pose. @throws std::invalid_argument for a mesh
+/// without usable triangles.
+std::unique_ptr<ObjectBody> make_object_body(const Mesh& mesh, const SimParams& params);
+
+}  // namespace cordgrasp::bullet
