@@ -32,6 +32,7 @@ struct Aabb3 {
 // Cheap conservative tests that let most triangles skip GJK: the child's bounding sphere and,
 // for polyhedral children, its face planes pushed out by the margin (child frame).
 struct ConvexCuller {
+  btVector3 lo{0, 0, 0}, hi{0, 0, 0};  // local AABB, margin included
   btVector3 center{0, 0, 0};
   double radius = 0.0;
   std::vector<btVector4> planes;  // n·p ≤ w inside (unit n)
@@ -39,6 +40,9 @@ struct ConvexCuller {
 
 ConvexCuller make_culler(const btConvexShape& shape) {
   ConvexCuller c;
+  btTransform identity;
+  identity.setIdentity();
+  shape.getAabb(identity, c.lo, c.hi);
   shape.getBoundingSphere(c.center, c.radius);
   if (shape.getShapeType() == BOX_SHAPE_PROXYTYPE) {
     const btVector3 h = static_cast<const btBoxShape&>(shape).getHalfExtentsWithMargin();
@@ -104,8 +108,124 @@ double point_triangle_distance2(const btVector3& p, const btVector3& a, const bt
   return (p - (a + ab * (vb * denom) + ac * (vc * denom))).length2();
 }
 
-// Closest points of one convex child against the triangles of the object BVH near it.
-class TriangleQuery : public btTriangleCallback {
+// Bounding-volume hierarchy over the object's triangles (median split, ≤ 4 per leaf), traversed
+// with the oriented box of a link child: Bullet's own BVH only offers world-AABB queries, and
+// a rotated phalanx's world AABB takes in far more triangles than the phalanx itself.
+class TriangleBvh {
+ public:
+  explicit TriangleBvh(const bullet::ObjectMeshShape& mesh) {
+    const int n = static_cast<int>(mesh.indices.size() / 3);
+    corners_.resize(static_cast<size_t>(3 * n));
+    for (int t = 0; t < n; ++t)
+      for (int k = 0; k < 3; ++k) {
+        const int v = mesh.indices[static_cast<size_t>(3 * t + k)];
+        corners_[static_cast<size_t>(3 * t + k)] =
+            btVector3(mesh.vertices[static_cast<size_t>(3 * v)],
+                      mesh.vertices[static_cast<size_t>(3 * v + 1)],
+                      mesh.vertices[static_cast<size_t>(3 * v + 2)]);
+      }
+    order_.resize(static_cast<size_t>(n));
+    for (int t = 0; t < n; ++t) order_[static_cast<size_t>(t)] = t;
+    if (n > 0) build(0, n);
+  }
+
+  /// Calls f(a, b, c) (object frame corners) for triangles that may lie within `pad` of the
+  /// child box [lo, hi] posed at X_OC (world AABB `w_lo`, `w_hi`); f returns true to stop.
+  template <class F>
+  void query(const btTransform& X_OC, const btVector3& lo, const btVector3& hi,
+             const btVector3& w_lo, const btVector3& w_hi, double pad, F&& f) const {
+    if (nodes_.empty()) return;
+    const btTransform X_CO = X_OC.inverse();
+    const btMatrix3x3& R = X_CO.getBasis();
+    const btMatrix3x3 R_abs = R.absolute();
+    const btVector3 vpad(pad, pad, pad);
+    const btVector3 qlo = w_lo - vpad, qhi = w_hi + vpad;
+    const btVector3 llo = lo - vpad, lhi = hi + vpad;
+    int stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& node = nodes_[static_cast<size_t>(stack[--top])];
+      if (node.lo.x() > qhi.x() || node.hi.x() < qlo.x() || node.lo.y() > qhi.y() ||
+          node.hi.y() < qlo.y() || node.lo.z() > qhi.z() || node.hi.z() < qlo.z())
+        continue;
+      const btVector3 c = X_CO * (0.5 * (node.lo + node.hi));
+      const btVector3 h = 0.5 * (node.hi - node.lo);
+      bool separated = false;
+      for (int i = 0; i < 3 && !separated; ++i) {
+        const double r = R_abs[i].dot(h);
+        separated = c[i] - r > lhi[i] || c[i] + r < llo[i];
+      }
+      if (separated) continue;
+      if (node.count > 0) {
+        for (int k = node.first; k < node.first + node.count; ++k) {
+          const size_t t = static_cast<size_t>(order_[static_cast<size_t>(k)]);
+          if (f(corners_[3 * t], corners_[3 * t + 1], corners_[3 * t + 2])) return;
+        }
+      } else {
+        // Median splits keep the depth ≤ log2(triangles) + 1, far below the stack size.
+        stack[top++] = node.first;     // right child
+        stack[top++] = node.self + 1;  // left child
+      }
+    }
+  }
+
+ private:
+  struct Node {
+    btVector3 lo, hi;
+    int first = 0;  // leaf: first index into order_; inner: index of the right child
+    int count = 0;  // leaf: triangle count; 0: inner node whose left child is the next node
+    int self = 0;
+  };
+
+  int build(int begin, int end) {
+    const int index = static_cast<int>(nodes_.size());
+    nodes_.push_back(Node{});
+    btVector3 lo(1e300, 1e300, 1e300), hi(-1e300, -1e300, -1e300);
+    btVector3 clo = lo, chi = hi;
+    for (int k = begin; k < end; ++k) {
+      const size_t t = static_cast<size_t>(order_[static_cast<size_t>(k)]);
+      btVector3 centroid(0, 0, 0);
+      for (int j = 0; j < 3; ++j) {
+        lo.setMin(corners_[3 * t + j]);
+        hi.setMax(corners_[3 * t + j]);
+        centroid += corners_[3 * t + j];
+      }
+      centroid /= 3.0;
+      clo.setMin(centroid);
+      chi.setMax(centroid);
+    }
+    nodes_[static_cast<size_t>(index)].lo = lo;
+    nodes_[static_cast<size_t>(index)].hi = hi;
+    nodes_[static_cast<size_t>(index)].self = index;
+    if (end - begin <= kLeafTriangles) {
+      nodes_[static_cast<size_t>(index)].first = begin;
+      nodes_[static_cast<size_t>(index)].count = end - begin;
+      return index;
+    }
+    const int axis = (chi - clo).maxAxis();
+    const int mid = (begin + end) / 2;
+    auto centroid_on_axis = [&](int t) {
+      const size_t u = static_cast<size_t>(t);
+      return corners_[3 * u][axis] + corners_[3 * u + 1][axis] + corners_[3 * u + 2][axis];
+    };
+    std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+                     [&](int a, int b) { return centroid_on_axis(a) < centroid_on_axis(b); });
+    build(begin, mid);
+    const int right = build(mid, end);
+    nodes_[static_cast<size_t>(index)].first = right;
+    nodes_[static_cast<size_t>(index)].count = 0;
+    return index;
+  }
+
+  static constexpr int kLeafTriangles = 4;
+  std::vector<btVector3> corners_;  // 3 per triangle, object frame
+  std::vector<int> order_;
+  std::vector<Node> nodes_;
+};
+
+// Closest points (or first penetration) of one convex child against the object's triangles.
+class TriangleQuery {
  public:
   TriangleQuery(const btConvexShape* convex, const ConvexCuller& culler, const btTransform& X_OC,
                 double max_distance, bool stop_at_penetration)
@@ -121,18 +241,25 @@ class TriangleQuery : public btTriangleCallback {
     sphere_reach_sq_ = r * r;
   }
 
-  void processTriangle(btVector3* tri, int /*part*/, int /*index*/) override {
-    if (stop_ && found_ && best_.m_distance < 0.0) return;
-    // Conservative rejects in the child frame: outside the bounding sphere, or all three
-    // corners beyond one face plane (both widened by max_distance).
-    const btVector3 a = X_CO_ * tri[0], b = X_CO_ * tri[1], c = X_CO_ * tri[2];
-    if (point_triangle_distance2(culler_.center, a, b, c) > sphere_reach_sq_) return;
+  // Returns true to stop the traversal (penetration found in stop mode).
+  bool operator()(const btVector3& t0, const btVector3& t1, const btVector3& t2) {
+    // Conservative rejects in the child frame: all three corners beyond one face of the local
+    // box or of the hull (widened by max_distance), or outside the bounding sphere.
+    const btVector3 a = X_CO_ * t0, b = X_CO_ * t1, c = X_CO_ * t2;
+    const double m = max_distance_;
+    for (int i = 0; i < 3; ++i) {
+      if (a[i] > culler_.hi[i] + m && b[i] > culler_.hi[i] + m && c[i] > culler_.hi[i] + m)
+        return false;
+      if (a[i] < culler_.lo[i] - m && b[i] < culler_.lo[i] - m && c[i] < culler_.lo[i] - m)
+        return false;
+    }
+    if (point_triangle_distance2(culler_.center, a, b, c) > sphere_reach_sq_) return false;
     for (const btVector4& pl : culler_.planes) {
       const btVector3 n(pl.x(), pl.y(), pl.z());
-      const double w = pl.w() + max_distance_;
-      if (n.dot(a) > w && n.dot(b) > w && n.dot(c) > w) return;
+      const double w = pl.w() + m;
+      if (n.dot(a) > w && n.dot(b) > w && n.dot(c) > w) return false;
     }
-    btTriangleShape triangle(tri[0], tri[1], tri[2]);
+    btTriangleShape triangle(t0, t1, t2);
     triangle.setMargin(0.0);
     btVoronoiSimplexSolver simplex;
     btGjkEpaPenetrationDepthSolver epa;
@@ -143,11 +270,12 @@ class TriangleQuery : public btTriangleCallback {
     input.m_maximumDistanceSquared = max_sq_;
     btPointCollector result;
     gjk.getClosestPoints(input, result, nullptr);
-    if (!result.m_hasResult || result.m_distance > max_distance_) return;
+    if (!result.m_hasResult || result.m_distance > max_distance_) return false;
     if (!found_ || result.m_distance < best_.m_distance) {
       best_ = result;
       found_ = true;
     }
+    return stop_ && best_.m_distance < 0.0;
   }
 
   bool found() const { return found_; }
@@ -182,6 +310,7 @@ class BulletHandCollider final : public HandObjectCollider {
     identity.setIdentity();
     object_->shape->getAabb(identity, lo, hi);
     object_aabb_ = {lo, hi};
+    bvh_ = std::make_unique<TriangleBvh>(*object_);
     object_center_ = btVector3(0, 0, 0);
     for (const auto& v : object.vertices) object_center_ += bullet::to_bt(v);
     object_center_ /= static_cast<double>(object.vertices.size());
@@ -219,8 +348,10 @@ class BulletHandCollider final : public HandObjectCollider {
     if (!s.compound || !link_aabb_[link].overlaps(object_aabb_)) return false;
     for (size_t c = 0; c < s.children.size(); ++c) {
       if (!child_aabb_[link][c].overlaps(object_aabb_)) continue;
-      TriangleQuery q(s.children[c].get(), cullers_[link][c], child_pose(link, c), 0.0, true);
-      object_->shape->processAllTriangles(&q, child_aabb_[link][c].lo, child_aabb_[link][c].hi);
+      const btTransform X_OC = child_pose(link, c);
+      TriangleQuery q(s.children[c].get(), cullers_[link][c], X_OC, 0.0, true);
+      bvh_->query(X_OC, cullers_[link][c].lo, cullers_[link][c].hi, child_aabb_[link][c].lo,
+                  child_aabb_[link][c].hi, 0.0, q);
       if (q.found() && q.best().m_distance < 0.0) return true;
     }
     return false;
@@ -273,12 +404,15 @@ class BulletHandCollider final : public HandObjectCollider {
     const btVector3 pad(max_distance_m, max_distance_m, max_distance_m);
     bool found = false;
     btPointCollector best;
+    best.m_pointInWorld.setZero();
+    best.m_normalOnBInWorld.setValue(0, 0, 1);
     for (size_t c = 0; c < s.children.size(); ++c) {
       const Aabb3 box{child_aabb_[link][c].lo - pad, child_aabb_[link][c].hi + pad};
       if (!box.overlaps(object_aabb_)) continue;
-      TriangleQuery q(s.children[c].get(), cullers_[link][c], child_pose(link, c), max_distance_m,
-                      false);
-      object_->shape->processAllTriangles(&q, box.lo, box.hi);
+      const btTransform X_OC = child_pose(link, c);
+      TriangleQuery q(s.children[c].get(), cullers_[link][c], X_OC, max_distance_m, false);
+      bvh_->query(X_OC, cullers_[link][c].lo, cullers_[link][c].hi, child_aabb_[link][c].lo,
+                  child_aabb_[link][c].hi, max_distance_m, q);
       if (q.found() && (!found || q.best().m_distance < best.m_distance)) {
         best = q.best();
         found = true;
@@ -316,6 +450,7 @@ class BulletHandCollider final : public HandObjectCollider {
   }
 
   std::unique_ptr<bullet::ObjectMeshShape> object_;
+  std::unique_ptr<TriangleBvh> bvh_;
   Aabb3 object_aabb_;
   btVector3 object_center_{0, 0, 0};  // vertex mean
   double object_radius_ = 0.0;        // max vertex distance from it
