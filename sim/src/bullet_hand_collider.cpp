@@ -9,6 +9,7 @@
 #include <LinearMath/btConvexHullComputer.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -323,6 +324,9 @@ class BulletHandCollider final : public HandObjectCollider {
     for (size_t l = 0; l < links_.size(); ++l)
       for (const auto& child : links_[l].children) cullers_[l].push_back(make_culler(*child));
     X_OL_.assign(links_.size(), identity);
+    motion_.assign(links_.size(), 0.0);
+    object_cert_.assign(links_.size(), Certificate{});
+    pair_cert_.assign(links_.size() * links_.size(), Certificate{});
     child_aabb_.resize(links_.size());
     link_aabb_.resize(links_.size());
     for (size_t i = 0; i < links_.size(); ++i) update_aabbs(static_cast<int>(i));
@@ -339,21 +343,33 @@ class BulletHandCollider final : public HandObjectCollider {
   }
 
   void set_link_pose(int link, const Eigen::Isometry3d& X_OL) override {
-    X_OL_.at(link) = to_bt(X_OL);
+    const btTransform X_new = to_bt(X_OL);
+    motion_.at(static_cast<size_t>(link)) += displacement_bound(link, X_OL_[link], X_new);
+    X_OL_[link] = X_new;
     update_aabbs(link);
   }
 
   bool link_collides_with_object(int link) override {
     const LinkShape& s = links_.at(link);
     if (!s.compound || !link_aabb_[link].overlaps(object_aabb_)) return false;
+    Certificate& cert = object_cert_[static_cast<size_t>(link)];
+    if (cert.holds(motion_[link])) return false;
+    // Distances up to kCertifyDistance_m are measured too, so that the next queries can be
+    // answered from the certificate while the link moves less than the measured clearance.
+    double clearance = kCertifyDistance_m;
     for (size_t c = 0; c < s.children.size(); ++c) {
-      if (!child_aabb_[link][c].overlaps(object_aabb_)) continue;
       const btTransform X_OC = child_pose(link, c);
-      TriangleQuery q(s.children[c].get(), cullers_[link][c], X_OC, 0.0, true);
+      TriangleQuery q(s.children[c].get(), cullers_[link][c], X_OC, kCertifyDistance_m, true);
       bvh_->query(X_OC, cullers_[link][c].lo, cullers_[link][c].hi, child_aabb_[link][c].lo,
-                  child_aabb_[link][c].hi, 0.0, q);
-      if (q.found() && q.best().m_distance < 0.0) return true;
+                  child_aabb_[link][c].hi, kCertifyDistance_m, q);
+      if (!q.found()) continue;
+      if (q.best().m_distance < 0.0) {
+        cert = Certificate{};
+        return true;
+      }
+      clearance = std::min(clearance, q.best().m_distance);
     }
+    cert = Certificate{clearance, motion_[link]};
     return false;
   }
 
@@ -361,6 +377,10 @@ class BulletHandCollider final : public HandObjectCollider {
     const LinkShape& sa = links_.at(a);
     const LinkShape& sb = links_.at(b);
     if (!sa.compound || !sb.compound || !link_aabb_[a].overlaps(link_aabb_[b])) return false;
+    Certificate& cert = pair_cert_[static_cast<size_t>(a) * links_.size() + static_cast<size_t>(b)];
+    const double motion = motion_[a] + motion_[b];
+    if (cert.holds(motion)) return false;
+    double clearance = std::numeric_limits<double>::infinity();
     for (size_t i = 0; i < sa.children.size(); ++i) {
       for (size_t j = 0; j < sb.children.size(); ++j) {
         if (!child_aabb_[a][i].overlaps(child_aabb_[b][j])) continue;
@@ -369,14 +389,18 @@ class BulletHandCollider final : public HandObjectCollider {
         btGjkPairDetector gjk(sa.children[i].get(), sb.children[j].get(), &simplex, &epa);
         btDiscreteCollisionDetectorInterface::ClosestPointInput input;
         input.m_transformA = child_pose(a, i);
-        input.m_transformB = child_pose(b, j);
-        const double reach = sa.children[i]->getMargin() + sb.children[j]->getMargin();
-        input.m_maximumDistanceSquared = reach * reach;
+        input.m_transformB = child_pose(b, j);  // default max distance: always measured
         btPointCollector result;
         gjk.getClosestPoints(input, result, nullptr);
-        if (result.m_hasResult && result.m_distance < 0.0) return true;
+        if (!result.m_hasResult) continue;
+        if (result.m_distance < 0.0) {
+          cert = Certificate{};
+          return true;
+        }
+        clearance = std::min(clearance, result.m_distance);
       }
     }
+    if (std::isfinite(clearance)) cert = Certificate{clearance, motion};
     return false;
   }
 
@@ -401,6 +425,8 @@ class BulletHandCollider final : public HandObjectCollider {
                                                            double max_distance_m) override {
     const LinkShape& s = links_.at(link);
     if (!s.compound) return std::nullopt;
+    const Certificate& cert = object_cert_[static_cast<size_t>(link)];
+    if (cert.holds(motion_[link] + max_distance_m)) return std::nullopt;
     const btVector3 pad(max_distance_m, max_distance_m, max_distance_m);
     bool found = false;
     btPointCollector best;
@@ -430,6 +456,38 @@ class BulletHandCollider final : public HandObjectCollider {
  private:
   using LinkShape = bullet::LinkShape;
 
+  // Clearance certified when the links had accumulated `motion` (sum over the pair): no
+  // collision is possible while they have moved less than `clearance` since.
+  struct Certificate {
+    double clearance = -1.0;  // < 0: none
+    double motion = 0.0;
+    bool holds(double motion_now) const { return motion_now - motion < clearance; }
+  };
+
+  // Certify link–object clearance up to this distance in boolean queries [m].
+  static constexpr double kCertifyDistance_m = 5e-3;
+
+  // Bound on how far any point of the link's geometry moved between two poses: each child's
+  // bounding-sphere centre displacement plus its radius times the chord of the rotation angle.
+  double displacement_bound(int link, const btTransform& X_old, const btTransform& X_new) const {
+    const LinkShape& s = links_[static_cast<size_t>(link)];
+    if (!s.compound) return 0.0;
+    const btMatrix3x3 dR = X_new.getBasis() * X_old.getBasis().transpose();
+    const double cos_angle =
+        std::clamp(0.5 * (dR[0][0] + dR[1][1] + dR[2][2] - 1.0), -1.0, 1.0);
+    const double chord = std::sqrt(2.0 * (1.0 - cos_angle));  // 2 sin(angle/2)
+    double bound = 0.0;
+    for (size_t c = 0; c < s.children.size(); ++c) {
+      const ConvexCuller& cull = cullers_[static_cast<size_t>(link)][c];
+      const btVector3 center_L =
+          links_[static_cast<size_t>(link)].compound->getChildTransform(static_cast<int>(c)) *
+          cull.center;
+      const double moved = (X_new * center_L - X_old * center_L).length();
+      bound = std::max(bound, moved + chord * cull.radius);
+    }
+    return bound;
+  }
+
   btTransform child_pose(int link, size_t child) const {
     return X_OL_[link] * links_[link].compound->getChildTransform(static_cast<int>(child));
   }
@@ -457,6 +515,9 @@ class BulletHandCollider final : public HandObjectCollider {
   std::vector<LinkShape> links_;
   std::vector<std::vector<ConvexCuller>> cullers_;
   std::vector<btTransform> X_OL_;
+  std::vector<double> motion_;              // accumulated displacement bound per link [m]
+  std::vector<Certificate> object_cert_;    // per link
+  std::vector<Certificate> pair_cert_;      // per ordered link pair (a·n + b)
   std::vector<std::vector<Aabb3>> child_aabb_;
   std::vector<Aabb3> link_aabb_;
 };
