@@ -234,12 +234,8 @@ class TriangleQuery {
         culler_(culler),
         X_OC_(X_OC),
         X_CO_(X_OC.inverse()),
-        max_distance_(max_distance),
         stop_(stop_at_penetration) {
-    const double reach = max_distance + convex->getMargin();
-    max_sq_ = reach * reach;
-    const double r = culler.radius + max_distance;
-    sphere_reach_sq_ = r * r;
+    set_reach(max_distance);
   }
 
   // Returns true to stop the traversal (penetration found in stop mode).
@@ -265,6 +261,9 @@ class TriangleQuery {
     btVoronoiSimplexSolver simplex;
     btGjkEpaPenetrationDepthSolver epa;
     btGjkPairDetector gjk(convex_, &triangle, &simplex, &epa);
+    // Warm start: search from the triangle towards the child's centre.
+    const btVector3 axis = X_OC_ * culler_.center - (t0 + t1 + t2) / 3.0;
+    if (axis.length2() > 0.0) gjk.setCachedSeparatingAxis(axis);
     btDiscreteCollisionDetectorInterface::ClosestPointInput input;
     input.m_transformA = X_OC_;
     input.m_transformB.setIdentity();
@@ -275,6 +274,8 @@ class TriangleQuery {
     if (!found_ || result.m_distance < best_.m_distance) {
       best_ = result;
       found_ = true;
+      // Only nearer triangles matter from now on: tighten every cull and GJK's early exit.
+      if (best_.m_distance >= 0.0) set_reach(best_.m_distance);
     }
     return stop_ && best_.m_distance < 0.0;
   }
@@ -283,11 +284,19 @@ class TriangleQuery {
   const btPointCollector& best() const { return best_; }
 
  private:
+  void set_reach(double max_distance) {
+    max_distance_ = max_distance;
+    const double reach = max_distance + convex_->getMargin();
+    max_sq_ = reach * reach;
+    const double r = culler_.radius + max_distance;
+    sphere_reach_sq_ = r * r;
+  }
+
   const btConvexShape* convex_;
   const ConvexCuller& culler_;
   btTransform X_OC_;
   btTransform X_CO_;
-  double max_distance_;
+  double max_distance_ = 0.0;
   bool stop_;
   double max_sq_ = 0.0;
   double sphere_reach_sq_ = 0.0;
@@ -327,6 +336,7 @@ class BulletHandCollider final : public HandObjectCollider {
     motion_.assign(links_.size(), 0.0);
     object_cert_.assign(links_.size(), Certificate{});
     pair_cert_.assign(links_.size() * links_.size(), Certificate{});
+    pair_axis_.assign(links_.size() * links_.size(), btVector3(0, 0, 0));
     child_aabb_.resize(links_.size());
     link_aabb_.resize(links_.size());
     for (size_t i = 0; i < links_.size(); ++i) update_aabbs(static_cast<int>(i));
@@ -377,7 +387,7 @@ class BulletHandCollider final : public HandObjectCollider {
     const LinkShape& sa = links_.at(a);
     const LinkShape& sb = links_.at(b);
     if (!sa.compound || !sb.compound || !link_aabb_[a].overlaps(link_aabb_[b])) return false;
-    Certificate& cert = pair_cert_[static_cast<size_t>(a) * links_.size() + static_cast<size_t>(b)];
+    Certificate& cert = pair_cert_[pair_index(a, b)];
     const double motion = motion_[a] + motion_[b];
     if (cert.holds(motion)) return false;
     double clearance = std::numeric_limits<double>::infinity();
@@ -387,11 +397,15 @@ class BulletHandCollider final : public HandObjectCollider {
         btVoronoiSimplexSolver simplex;
         btGjkEpaPenetrationDepthSolver epa;
         btGjkPairDetector gjk(sa.children[i].get(), sb.children[j].get(), &simplex, &epa);
+        // Warm start from the last separating axis of this pair (first children only).
+        btVector3* axis = i == 0 && j == 0 ? &pair_axis_[pair_index(a, b)] : nullptr;
+        if (axis && axis->length2() > 0.0) gjk.setCachedSeparatingAxis(*axis);
         btDiscreteCollisionDetectorInterface::ClosestPointInput input;
         input.m_transformA = child_pose(a, i);
         input.m_transformB = child_pose(b, j);  // default max distance: always measured
         btPointCollector result;
         gjk.getClosestPoints(input, result, nullptr);
+        if (axis) *axis = gjk.getCachedSeparatingAxis();
         if (!result.m_hasResult) continue;
         if (result.m_distance < 0.0) {
           cert = Certificate{};
@@ -488,6 +502,10 @@ class BulletHandCollider final : public HandObjectCollider {
     return bound;
   }
 
+  size_t pair_index(int a, int b) const {
+    return static_cast<size_t>(a) * links_.size() + static_cast<size_t>(b);
+  }
+
   btTransform child_pose(int link, size_t child) const {
     return X_OL_[link] * links_[link].compound->getChildTransform(static_cast<int>(child));
   }
@@ -518,6 +536,7 @@ class BulletHandCollider final : public HandObjectCollider {
   std::vector<double> motion_;              // accumulated displacement bound per link [m]
   std::vector<Certificate> object_cert_;    // per link
   std::vector<Certificate> pair_cert_;      // per ordered link pair (a·n + b)
+  std::vector<btVector3> pair_axis_;        // last GJK separating axis per pair
   std::vector<std::vector<Aabb3>> child_aabb_;
   std::vector<Aabb3> link_aabb_;
 };
