@@ -151,7 +151,7 @@ QualityMode quality_mode_from_string(const std::string& text) {
 
 std::vector<Wrench> contact_wrenches(const Eigen::Vector3d& p_O, const Eigen::Vector3d& n_O,
                                      double mu, int edges, const Eigen::Vector3d& center_O,
-                                     double torque_scale_per_m) {
+                                     double torque_scale_per_m, double soft_finger_radius_m) {
   if (edges < 1) throw std::invalid_argument("contact_wrenches: edges must be >= 1");
   const Eigen::Vector3d n = n_O.normalized();
   Eigen::Vector3d t1, t2;
@@ -165,6 +165,14 @@ std::vector<Wrench> contact_wrenches(const Eigen::Vector3d& p_O, const Eigen::Ve
     Wrench w;
     w.head<3>() = f;
     w.tail<3>() = torque_scale_per_m * r.cross(f);
+    if (soft_finger_radius_m > 0.0) {
+      const Eigen::Vector3d torsion =
+          torque_scale_per_m * mu * soft_finger_radius_m * f.dot(-n) * (-n);
+      Wrench w2 = w;
+      w.tail<3>() += torsion;
+      w2.tail<3>() -= torsion;
+      out.push_back(w2);
+    }
     out.push_back(w);
   }
   return out;
@@ -266,7 +274,8 @@ GraspQuality evaluate_grasp_quality(const std::vector<Contact>& contacts,
   w.reserve(contacts.size() * static_cast<size_t>(params.contact.cone_edges));
   for (const Contact& c : contacts) {
     const auto cw = contact_wrenches(c.p_O, c.n_O, mu, params.contact.cone_edges,
-                                     object.center_O, object.torque_scale_per_m);
+                                     object.center_O, object.torque_scale_per_m,
+                                     params.contact.soft_finger_radius_m);
     w.insert(w.end(), cw.begin(), cw.end());
   }
   // Most finger-stage results are not force closure: a small LP rules those out before the

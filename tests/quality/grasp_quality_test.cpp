@@ -74,6 +74,21 @@ TEST(GraspQuality, TwoPointContactsAreNeverForceClosure) {
   }
 }
 
+// Two soft fingers pinching opposite faces: torsional friction resists the moment about the
+// line through the contacts, so the pinch is force closure with friction and not without.
+TEST(GraspQuality, TwoOppositeSoftFingerContactsAreForceClosureOnlyWithFriction) {
+  const WrenchSpaceObject box = prepare_wrench_space(make_box_mesh({0.1, 0.1, 0.1}), {});
+  const std::vector<Contact> two = {contact({0.05, 0.0, 0.0}, Eigen::Vector3d::UnitX()),
+                                    contact({-0.05, 0.0, 0.0}, -Eigen::Vector3d::UnitX())};
+  QualityParams soft = textbook(0.5);
+  soft.contact.soft_finger_radius_m = 0.005;
+  const GraspQuality with_friction = evaluate_grasp_quality(two, box, soft);
+  EXPECT_TRUE(with_friction.force_closure);
+  EXPECT_GT(with_friction.epsilon, 0.0);
+  soft.contact.mu = 0.0;
+  EXPECT_FALSE(evaluate_grasp_quality(two, box, soft).force_closure);
+}
+
 TEST(GraspQuality, FewerThanTwoContactsAreNotForceClosure) {
   const std::vector<Contact> one = {contact({1, 0, 0}, Eigen::Vector3d::UnitX())};
   EXPECT_FALSE(evaluate_grasp_quality(one, unit_object(), textbook(0.5)).force_closure);
