@@ -123,21 +123,31 @@ Eigen::Matrix3d thumb_calibration(const HandModel& hand, const Eigen::VectorXd& 
   if (hand.thumb_links.empty()) return Eigen::Matrix3d::Identity();
   const int thumb_tip = deepest(hand.thumb_links);
 
+  // Links of the thumb's chains (the named thumb links and everything they carry).
   const auto children = child_joints(hand);
+  std::vector<char> thumb(hand.links.size(), 0);
+  for (int l : hand.thumb_links) collect_subtree(hand, children, l, thumb);
+  // One tip per actor: its outermost non-thumb link (a gripper actor moving both fingers
+  // through a mimic joint yields the non-thumb finger).
   std::vector<Eigen::Vector3d> tips;
   for (const Actor& actor : hand.actors) {
     std::vector<char> in(hand.links.size(), 0);
     for (const auto& e : actor.joints)
       collect_subtree(hand, children, hand.joints[static_cast<size_t>(e.joint)].child_link, in);
-    bool is_thumb = false;
-    for (int l : hand.thumb_links) is_thumb = is_thumb || in[static_cast<size_t>(l)];
-    if (is_thumb) continue;
-    std::vector<int> links;
-    for (size_t l = 0; l < in.size(); ++l)
-      if (in[l] && has_collision(hand.links[l])) links.push_back(static_cast<int>(l));
-    if (links.empty())
-      for (size_t l = 0; l < in.size(); ++l)
-        if (in[l]) links.push_back(static_cast<int>(l));
+    for (size_t j = 0; j < hand.joints.size(); ++j) {  // mimic followers move with the actor
+      const auto& m = hand.joints[j].mimic;
+      if (!m) continue;
+      for (const auto& e : actor.joints)
+        if (e.joint == m->master_joint)
+          collect_subtree(hand, children, hand.joints[j].child_link, in);
+    }
+    std::vector<int> links, any;
+    for (size_t l = 0; l < in.size(); ++l) {
+      if (!in[l] || thumb[l]) continue;
+      any.push_back(static_cast<int>(l));
+      if (has_collision(hand.links[l])) links.push_back(static_cast<int>(l));
+    }
+    if (links.empty()) links = any;
     if (!links.empty()) tips.push_back(tip_G(deepest(links)));
   }
   if (tips.empty()) return Eigen::Matrix3d::Identity();
@@ -279,10 +289,7 @@ void close_fingers(const HandModel& hand, const HandSetup& setup, HandObjectColl
   std::vector<double> max_step(num_actors, 0.0);
   for (size_t a = 0; a < num_actors; ++a) {
     for (const auto& e : hand.actors[a].joints) {
-      const Joint& joint = hand.joints[static_cast<size_t>(e.joint)];
-      const double step =
-          joint.type == JointType::kPrismatic ? params.close_step_m : params.close_step_rad;
-      delta[a][e.joint] = step * e.direction_speed;
+      delta[a][e.joint] = params.close_step * e.direction_speed;
       max_step[a] = std::max(max_step[a], std::abs(delta[a][e.joint]));
     }
   }

@@ -24,23 +24,67 @@ Eigen::Isometry3d from_bt(const btTransform& X) {
 }
 
 std::unique_ptr<btConvexHullShape> make_convex_hull_shape(
-    const std::vector<Eigen::Vector3d>& points, double margin_m) {
+    const std::vector<Eigen::Vector3d>& points, double margin) {
   if (points.size() < 4) return nullptr;
   std::vector<double> coords;
   coords.reserve(points.size() * 3);
   for (const auto& v : points) coords.insert(coords.end(), {v.x(), v.y(), v.z()});
-  // Shrink the hull planes by the margin so hull + margin ≈ the authored hull; the shrink is
-  // clamped to a quarter of the hull's inner radius (btConvexHullComputer's relative clamp) so
-  // thin parts keep their shape. The achieved shrink becomes the margin.
   btConvexHullComputer hull;
-  const double shrink = hull.compute(coords.data(), 3 * static_cast<int>(sizeof(double)),
-                                     static_cast<int>(points.size()), margin_m, 0.25);
-  if (hull.vertices.size() < 4) return nullptr;
+  hull.compute(coords.data(), 3 * static_cast<int>(sizeof(double)),
+               static_cast<int>(points.size()), 0.0, 0.0);
+  const int nv = hull.vertices.size();
+  if (nv < 4) return nullptr;
+
+  // Shrink-wrap: inset every hull vertex so that its incident face planes move in by (about)
+  // the margin; hull + margin then matches the authored hull (rounded by the margin at edges).
+  // Insetting vertices keeps their number (btConvexHullComputer's own plane shrink multiplies
+  // it by ~4, which makes every GJK support call slower).
+  btVector3 lo = hull.vertices[0], hi = hull.vertices[0], centroid(0, 0, 0);
+  for (int i = 0; i < nv; ++i) {
+    lo.setMin(hull.vertices[i]);
+    hi.setMax(hull.vertices[i]);
+    centroid += hull.vertices[i];
+  }
+  centroid /= nv;
+  const double m = std::min(margin, 0.2 * (hi - lo)[(hi - lo).minAxis()]);
+  std::vector<std::vector<btVector3>> incident(static_cast<size_t>(nv));
+  for (int f = 0; f < hull.faces.size(); ++f) {
+    const btConvexHullComputer::Edge* first = &hull.edges[hull.faces[f]];
+    std::vector<int> corners;
+    const btConvexHullComputer::Edge* e = first;
+    do {
+      corners.push_back(e->getSourceVertex());
+      e = e->getNextEdgeOfFace();
+    } while (e != first && corners.size() < static_cast<size_t>(nv));
+    if (corners.size() < 3) continue;
+    btVector3 n(0, 0, 0);  // Newell normal of the face polygon
+    for (size_t k = 0; k < corners.size(); ++k) {
+      const btVector3& a = hull.vertices[corners[k]];
+      const btVector3& b = hull.vertices[corners[(k + 1) % corners.size()]];
+      n += a.cross(b);
+    }
+    if (n.length2() <= 0.0) continue;
+    n.normalize();
+    if (n.dot(hull.vertices[corners[0]] - centroid) < 0.0) n = -n;
+    for (int c : corners) incident[static_cast<size_t>(c)].push_back(n);
+  }
   auto shape = std::make_unique<btConvexHullShape>();
-  for (int i = 0; i < hull.vertices.size(); ++i) shape->addPoint(hull.vertices[i], false);
+  for (int i = 0; i < nv; ++i) {
+    btVector3 u(0, 0, 0);
+    for (const btVector3& n : incident[static_cast<size_t>(i)]) u += n;
+    btVector3 inset(0, 0, 0);
+    if (m > 0.0 && u.length2() > 0.0) {
+      u.normalize();
+      double least = 1.0;
+      for (const btVector3& n : incident[static_cast<size_t>(i)]) least = std::min(least, n.dot(u));
+      inset = -u * (m / std::max(least, 1.0 / 3.0));  // every incident face moves in by ≥ m
+    }
+    shape->addPoint(hull.vertices[i] + inset, false);
+  }
+  // GJK wants some margin; a flat hull gets 1 µm of inflation. Set the margin before the
+  // cached local AABB is computed: it includes the margin.
+  shape->setMargin(std::max(m, 1e-6));
   shape->recalcLocalAabb();
-  // GJK wants some margin; an unshrinkable (flat) hull gets 1 µm of inflation.
-  shape->setMargin(std::max(shrink, 1e-6));
   return shape;
 }
 

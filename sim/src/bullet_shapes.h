@@ -51,9 +51,9 @@ LinkShape make_links_shape(const std::vector<const Link*>& links,
                            const std::vector<Eigen::Isometry3d>& X_FL,
                            const ShapeParams& params = {});
 
-/// Shrink-wrapped convex hull of points (as link meshes get): hull planes pulled in by
-/// `margin_m` (at most a quarter of the inner radius), that margin set on the shape, so hull +
-/// margin ≈ the points' hull. nullptr for fewer than 4 points or a degenerate hull.
+/// Shrink-wrapped convex hull of points (as link meshes get): hull vertices inset so every face
+/// moves in by about `margin_m` (at most a fifth of the smallest extent), that margin set on
+/// the shape, so hull + margin ≈ the points' hull. nullptr for < 4 points or a flat hull.
 std::unique_ptr<btConvexHullShape> make_convex_hull_shape(
     const std::vector<Eigen::Vector3d>& points, double margin_m);
 

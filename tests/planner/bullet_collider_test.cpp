@@ -3,6 +3,7 @@
 
 #include <random>
 
+#include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/shapes.h"
 #include "cordgrasp/sim/bullet_hand_collider.h"
 #include "test_hands.h"
@@ -154,6 +155,65 @@ TEST(BulletCollider, ThrowsOnMeshWithoutUsableTriangles) {
   flat.triangles = {{0, 1, 2}};
   EXPECT_THROW(make_bullet_hand_collider(one_link_hand(sphere_geometry(0.01)), flat),
                std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace cordgrasp
+
+namespace cordgrasp {
+namespace {
+
+// The collider answers repeated queries from clearance certificates while links move less than
+// the certified clearance; along random small-step walks it must agree with a fresh collider.
+TEST(BulletCollider, CertifiedAnswersMatchFreshQueriesAlongRandomWalks) {
+  const HandModel hand = test::make_three_finger_hand(false);
+  const Mesh sphere = make_sphere_mesh(0.03);
+  auto cached = make_bullet_hand_collider(hand, sphere);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> step(-0.03, 0.03);
+  Eigen::VectorXd q = Eigen::VectorXd::Constant(static_cast<Eigen::Index>(hand.joints.size()), 0.4);
+  Eigen::Isometry3d X_OB = Eigen::Isometry3d::Identity();
+  X_OB.translation() = Eigen::Vector3d(0.0, 0.0, -0.06);
+  int collisions = 0, checks = 0;
+  for (int i = 0; i < 300; ++i) {
+    for (Eigen::Index j = 0; j < q.size(); ++j) q[j] = std::clamp(q[j] + step(rng), 0.0, 1.6);
+    X_OB.translation().z() += 0.2 * step(rng);
+    const auto X = link_poses(hand, q, X_OB);
+    cached->set_link_poses(X);
+    auto fresh = make_bullet_hand_collider(hand, sphere);
+    fresh->set_link_poses(X);
+    for (int l = 0; l < static_cast<int>(hand.links.size()); ++l) {
+      const bool c = fresh->link_collides_with_object(l);
+      EXPECT_EQ(cached->link_collides_with_object(l), c) << "step " << i << " link " << l;
+      collisions += c;
+      ++checks;
+      for (int m = l + 1; m < static_cast<int>(hand.links.size()); ++m)
+        EXPECT_EQ(cached->links_collide(l, m), fresh->links_collide(l, m))
+            << "step " << i << " links " << l << ", " << m;
+    }
+  }
+  EXPECT_GT(collisions, 0);
+  EXPECT_LT(collisions, checks);
+}
+
+TEST(BulletCollider, DistanceLowerBoundNeverExceedsTheDistance) {
+  const HandModel hand = test::make_three_finger_hand(false);
+  const Mesh box = make_box_mesh({0.04, 0.06, 0.05});
+  auto collider = make_bullet_hand_collider(hand, box);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-0.15, 0.15);
+  for (int i = 0; i < 100; ++i) {
+    Eigen::Isometry3d X_OB = Eigen::Isometry3d::Identity();
+    X_OB.linear() = Eigen::Quaterniond::UnitRandom().toRotationMatrix();
+    X_OB.translation() = Eigen::Vector3d(u(rng), u(rng), u(rng));
+    collider->set_link_poses(link_poses(hand, hand.preshape, X_OB));
+    for (int l = 0; l < static_cast<int>(hand.links.size()); ++l) {
+      const double bound = collider->link_object_distance_lower_bound(l);
+      const auto prox = collider->link_object_proximity(l, 1.0);
+      ASSERT_TRUE(prox.has_value());
+      EXPECT_LE(bound, prox->distance_m + 1e-9);
+    }
+  }
 }
 
 }  // namespace

@@ -45,7 +45,8 @@ inline int add_joint(HandModel& hand, const std::string& name, JointType type, i
 
 /// Palm 0.14 × 0.04 × 0.03 m below z = 0; two 0.01 × 0.02 × 0.08 m fingers standing on it,
 /// inner faces at x = ∓0.055 when open (q = 0), closing along ±x by prismatic joints
-/// (0 … 0.055 m). GCP on the palm at z = 0.06, +z between the fingers. Thumb: left finger.
+/// (0 … 0.055 m, actor speed 0.05: 1 mm per closing step). GCP on the palm at z = 0.06, +z
+/// between the fingers. Thumb: left finger.
 inline HandModel make_parallel_gripper() {
   HandModel h;
   h.name = "test_parallel_gripper";
@@ -62,8 +63,8 @@ inline HandModel make_parallel_gripper() {
   h.gcp.link = palm;
   h.gcp.X_LG.translation() = Eigen::Vector3d(0, 0, 0.06);
   h.preshape = Eigen::VectorXd::Zero(2);
-  h.actors.push_back({"left", {{jl, 1.0}}});
-  h.actors.push_back({"right", {{jr, 1.0}}});
+  h.actors.push_back({"left", {{jl, 0.05}}});
+  h.actors.push_back({"right", {{jr, 0.05}}});
   h.thumb_links = {left};
   return h;
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <random>
 
 #include <Eigen/LU>
 
@@ -71,6 +72,21 @@ TEST(GraspQuality, TwoPointContactsAreNeverForceClosure) {
     EXPECT_FALSE(q.force_closure) << "mu " << mu;
     EXPECT_FALSE(q.hull.valid) << "mu " << mu;
   }
+}
+
+// Two soft fingers pinching opposite faces: torsional friction resists the moment about the
+// line through the contacts, so the pinch is force closure with friction and not without.
+TEST(GraspQuality, TwoOppositeSoftFingerContactsAreForceClosureOnlyWithFriction) {
+  const WrenchSpaceObject box = prepare_wrench_space(make_box_mesh({0.1, 0.1, 0.1}), {});
+  const std::vector<Contact> two = {contact({0.05, 0.0, 0.0}, Eigen::Vector3d::UnitX()),
+                                    contact({-0.05, 0.0, 0.0}, -Eigen::Vector3d::UnitX())};
+  QualityParams soft = textbook(0.5);
+  soft.contact.soft_finger_radius_m = 0.005;
+  const GraspQuality with_friction = evaluate_grasp_quality(two, box, soft);
+  EXPECT_TRUE(with_friction.force_closure);
+  EXPECT_GT(with_friction.epsilon, 0.0);
+  soft.contact.mu = 0.0;
+  EXPECT_FALSE(evaluate_grasp_quality(two, box, soft).force_closure);
 }
 
 TEST(GraspQuality, FewerThanTwoContactsAreNotForceClosure) {
@@ -226,6 +242,40 @@ TEST(GraspQuality, SimoxOwsIsDeterministicForASeed) {
   EXPECT_GT(a, 0.0);
   p.seed = 2;
   EXPECT_NE(prepare_wrench_space(sphere, p).ows_min_offset, a);
+}
+
+// The LP pre-check must never change the verdict of the hull.
+TEST(GraspQuality, LinearProgramPrecheckAgreesWithTheHullOnRandomGrasps) {
+  std::mt19937_64 rng(17);
+  std::normal_distribution<double> gauss;
+  const WrenchSpaceObject object = unit_object(2.0 / 0.1);
+  int fc = 0, total = 0;
+  for (int trial = 0; trial < 160; ++trial) {
+    std::vector<Contact> contacts;
+    const int k = 2 + trial % 4;
+    for (int i = 0; i < k; ++i) {
+      const Eigen::Vector3d dir = Eigen::Vector3d(gauss(rng), gauss(rng), gauss(rng)).normalized();
+      const Eigen::Vector3d noise(gauss(rng), gauss(rng), gauss(rng));
+      contacts.push_back(contact(0.05 * dir, dir + 0.4 * noise));
+    }
+    std::vector<Wrench> w;
+    for (const Contact& c : contacts) {
+      const auto cw = contact_wrenches(c.p_O, c.n_O, 0.5, 8, object.center_O,
+                                       object.torque_scale_per_m);
+      w.insert(w.end(), cw.begin(), cw.end());
+    }
+    const WrenchHull hull = wrench_hull(w);
+    const bool hull_fc = hull.valid && hull.max_offset < 0.0;
+    const GraspQuality q = evaluate_grasp_quality(contacts, object, textbook(0.5));
+    EXPECT_EQ(q.force_closure, hull_fc) << "trial " << trial;
+    if (hull_fc) {
+      EXPECT_NEAR(q.epsilon, hull.min_origin_distance, kExactTol);
+    }
+    fc += hull_fc;
+    ++total;
+  }
+  EXPECT_GT(fc, 10);  // both outcomes are exercised
+  EXPECT_LT(fc, total - 10);
 }
 
 TEST(QualityMode, ParsesBothNamesAndRejectsOthers) {

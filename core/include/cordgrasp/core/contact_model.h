@@ -10,6 +10,10 @@ inline constexpr double kDefaultFrictionCoefficient = 0.5;
 struct ContactModel {
   double mu = kDefaultFrictionCoefficient;  ///< Coulomb friction coefficient [-]
   int cone_edges = 8;                       ///< edges of the linearized friction cone (spec §8)
+  /// 0: point contact with friction (spec §8). > 0: soft finger, torsional friction up to
+  /// μ · radius · normal force about the normal (contact patch radius) [m]. Two point contacts
+  /// can never be force closure (no moment about the line through them); two soft fingers can.
+  double soft_finger_radius_m = 0.0;
 };
 
 }  // namespace cordgrasp

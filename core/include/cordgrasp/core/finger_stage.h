@@ -16,8 +16,10 @@ struct FingerParams {
   double approach_step_m = 1e-3;   ///< approach step along GCP +z (§7.2)
   double retreat_step_m = 1e-3;    ///< retreat step along GCP −z (§7.3)
   int max_retreat_steps = 1000;    ///< give up (hand cannot get free) after this many (§7.3)
-  double close_step_rad = 0.02;    ///< closing step of a revolute joint per unit speed (§7.4)
-  double close_step_m = 1e-3;      ///< closing step of a prismatic joint per unit speed
+  /// Closing step per iteration (§7.4): each actor joint moves by close_step × its signed
+  /// speed (Simox directionAndSpeed), in the joint's units (rad, or m for prismatic joints,
+  /// whose descriptions scale the speed accordingly, e.g. −0.1 → 2 mm).
+  double close_step = 0.02;
   double contact_tolerance_m = 0.5e-3;  ///< bisection near contact stops this close to the
                                         ///< surface; links this close are contacts
   int max_close_iterations = 2000;  ///< safety cap on closing iterations

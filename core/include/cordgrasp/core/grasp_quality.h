@@ -48,10 +48,13 @@ struct WrenchSpaceObject {
 WrenchSpaceObject prepare_wrench_space(const Mesh& mesh, const QualityParams& params);
 
 /// Cone-edge wrenches of one contact: force directions unit(−n + μ(cos φ_j t1 + sin φ_j t2)),
-/// φ_j = 2πj/edges, pushing into the object, torque λ·(p − c) × f (spec §8).
+/// φ_j = 2πj/edges, pushing into the object, torque λ·(p − c) × f (spec §8). With
+/// soft_finger_radius_m = ρ > 0 each edge comes twice, with torque ± λ·μ·ρ·(f·(−n))·(−n) added
+/// (torsional friction of a soft finger).
 std::vector<Wrench> contact_wrenches(const Eigen::Vector3d& p_O, const Eigen::Vector3d& n_O,
                                      double mu, int edges, const Eigen::Vector3d& center_O,
-                                     double torque_scale_per_m);
+                                     double torque_scale_per_m,
+                                     double soft_finger_radius_m = 0.0);
 
 /// Convex hull of 6D wrenches via Qhull ("QJ"), as signed facet offsets (spec §8).
 struct WrenchHull {
@@ -69,7 +72,8 @@ WrenchHull wrench_hull(const std::vector<Wrench>& wrenches);
 struct GraspQuality {
   bool force_closure = false;
   double epsilon = 0.0;  ///< textbook: origin→hull distance; simox: GWS/OWS ratio; 0 if not FC
-  WrenchHull hull;       ///< raw hull figures
+  WrenchHull hull;       ///< raw hull figures (not computed, valid = false, when a linear
+                         ///< program already showed the origin outside: textbook mode)
 };
 
 /// Force-closure test and ε of contacts on an object (spec §8). Fewer than 2 contacts, or a
