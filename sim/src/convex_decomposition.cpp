@@ -1,6 +1,7 @@
 #include "cordgrasp/sim/convex_decomposition.h"
 
 #include <HACD/hacdHACD.h>
+#include <LinearMath/btConvexHullComputer.h>
 
 #include <chrono>
 #include <cstdint>
@@ -138,6 +139,39 @@ std::mutex& hacd_mutex() {
 }
 
 }  // namespace
+
+std::vector<Eigen::Vector3d> simplified_convex_hull(const std::vector<Eigen::Vector3d>& points,
+                                                    int max_vertices) {
+  if (points.size() < 4) return points;
+  // Exact hull first (fast), so the incremental hull only looks at hull vertices.
+  std::vector<double> coords;
+  coords.reserve(points.size() * 3);
+  for (const auto& p : points) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
+  btConvexHullComputer exact;
+  exact.compute(coords.data(), 3 * static_cast<int>(sizeof(double)),
+                static_cast<int>(points.size()), 0.0, 0.0);
+  std::vector<Eigen::Vector3d> hull;
+  for (int i = 0; i < exact.vertices.size(); ++i)
+    hull.emplace_back(exact.vertices[i].x(), exact.vertices[i].y(), exact.vertices[i].z());
+  if (static_cast<int>(hull.size()) <= std::max(4, max_vertices) || hull.size() < 4) return hull;
+  std::vector<HACD::Vec3<HACD::Real>> in;
+  in.reserve(hull.size());
+  for (const auto& p : hull) in.emplace_back(p.x(), p.y(), p.z());
+  const std::lock_guard<std::mutex> lock(hacd_mutex());
+  HACD::ICHull ich;
+  ich.AddPoints(in.data(), in.size());
+  if (ich.Process(static_cast<unsigned long>(std::max(4, max_vertices))) != HACD::ICHullErrorOK ||
+      ich.IsFlat())
+    return hull;
+  const size_t nv = ich.GetMesh().GetNVertices();
+  std::vector<HACD::Vec3<HACD::Real>> out(nv);
+  std::vector<HACD::Vec3<long>> tris(std::max<size_t>(ich.GetMesh().GetNTriangles(), 1));
+  ich.GetMesh().GetIFS(out.data(), tris.data());
+  std::vector<Eigen::Vector3d> result;
+  result.reserve(nv);
+  for (const auto& p : out) result.emplace_back(p.X(), p.Y(), p.Z());
+  return result.size() >= 4 ? result : hull;
+}
 
 std::string mesh_hash(const Mesh& mesh) {
   Fnv1a f;

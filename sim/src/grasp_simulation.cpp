@@ -3,6 +3,7 @@
 #include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -202,7 +203,24 @@ GraspSimulation::Impl::Impl(const Mesh& mesh, const HandModel& h, const Grasp& g
   hp.default_effort_N = params.default_effort_N;
   hp.effort_scale = params.effort_scale;
   hp.gear_erp = params.gear_erp;
-  hp.base_max_force_N = params.base_max_force_N;
+  hp.base_mass_scale = params.base_mass_scale;
+  if (params.lock_passive_joints) {
+    // Joints no actor drives (abduction, opposition) stay at their planned values, as in the
+    // planner's closing; mimic joints follow their master's fate.
+    std::vector<bool> driven(hand.joints.size(), false);
+    for (const Actor& actor : hand.actors)
+      for (const Actor::Entry& e : actor.joints)
+        if (e.joint >= 0 && e.joint < static_cast<int>(n)) driven[static_cast<size_t>(e.joint)] = true;
+    hp.locked.assign(hand.joints.size(), false);
+    for (size_t j = 0; j < hand.joints.size(); ++j) {
+      const Joint& joint = hand.joints[j];
+      if (!joint.is_moving()) continue;
+      const bool follows = joint.mimic && joint.mimic->master_joint >= 0 &&
+                           driven[static_cast<size_t>(joint.mimic->master_joint)];
+      hp.locked[j] = !driven[j] && !follows;
+    }
+    hp.lock_values = grasp.q;
+  }
   hand_body = bullet::make_hand_multibody(hand, hp);
   X_WB_cmd = X_WO0 * X_OB;
   bullet::place_hand(*hand_body, X_WB_cmd, grasp.q_preshape);
@@ -235,8 +253,8 @@ GraspSimulation::Impl::~Impl() {
 
 void GraspSimulation::Impl::step(const Eigen::Isometry3d& X_WB_next) {
   btMultiBody& mb = *hand_body->mb;
-  // Base: the velocity that reaches the commanded pose in one step (the solver sees it as
-  // velocity), held there by the fixed constraint whose world frame is moved along.
+  // Base (the arm's flange): heavy, its velocity commanded each step so that it reaches the
+  // trajectory's next pose; the solver sees the motion as velocity, never a jump.
   const Eigen::Isometry3d X_CR = hand_body->X_CL[static_cast<size_t>(hand.root_link)];
   const Eigen::Isometry3d X_WC_next = X_WB_next * X_CR.inverse();
   const Eigen::Isometry3d X_WC = bullet::body_pose(*hand_body, 0);
@@ -245,10 +263,6 @@ void GraspSimulation::Impl::step(const Eigen::Isometry3d& X_WB_next) {
       rotation_vector(X_WC_next.linear() * X_WC.linear().transpose()) / dt;
   mb.setBaseVel(to_bt(v));
   mb.setBaseOmega(to_bt(w));
-  hand_body->base_hold->setPivotInB(to_bt(Eigen::Vector3d(X_WC_next.translation())));
-  const Eigen::Matrix3d R = X_WC_next.linear();
-  hand_body->base_hold->setFrameInB(btMatrix3x3(R(0, 0), R(0, 1), R(0, 2), R(1, 0), R(1, 1),
-                                                R(1, 2), R(2, 0), R(2, 1), R(2, 2)));
   X_WB_cmd = X_WB_next;
 
   // Joint servos: speed toward the target, capped; the motor's impulse cap is the effort limit.
@@ -267,10 +281,9 @@ void GraspSimulation::Impl::step(const Eigen::Isometry3d& X_WB_next) {
 
   // Gravity compensation of the hand (the world adds m·g to every link).
   if (params.hand_gravity_compensation && gravity.squaredNorm() > 0.0) {
-    mb.addBaseForce(to_bt(Eigen::Vector3d(-hand_body->body_mass_kg[0] * gravity)));
+    mb.addBaseForce(to_bt(Eigen::Vector3d(-mb.getBaseMass() * gravity)));
     for (int i = 0; i < mb.getNumLinks(); ++i)
-      mb.addLinkForce(i, to_bt(Eigen::Vector3d(-hand_body->body_mass_kg[static_cast<size_t>(i + 1)] *
-                                               gravity)));
+      mb.addLinkForce(i, to_bt(Eigen::Vector3d(-mb.getLinkMass(i) * gravity)));
   }
   world->stepSimulation(dt, 0, dt);
   time_s += dt;
@@ -376,6 +389,26 @@ bool GraspSimulation::Impl::run(double duration, const Trajectory& trajectory) {
     if (closed && current) {
       const double moved = pose_change(X_BO_ref, nullptr);
       current->max_translation_m = std::max(current->max_translation_m, moved);
+      if (std::getenv("CG_DEBUG2") && s % 6 == 0) {
+        double rot = 0; const double dx = pose_change(X_BO_ref, &rot);
+        int c = 0; double pen = 0; contacts(c, pen);
+        const btVector3 bv = hand_body->mb->getBaseVel();
+        const btVector3 ov = object->body->getLinearVelocity();
+        const btVector3 bw = hand_body->mb->getBaseOmega();
+        double qdmax = 0; int imax = -1; for (int i = 0; i < hand_body->mb->getNumLinks(); ++i) if (std::abs(hand_body->mb->getJointVel(i)) > qdmax) { qdmax = std::abs(hand_body->mb->getJointVel(i)); imax = i; }
+        fprintf(stderr, "t %.3f dx %.4f rot %.3f contacts %d base v %.3f %.3f %.3f w %.3f %.3f %.3f obj v %.3f %.3f %.3f qdmax %.2f (%s)\n", time_s, dx, rot, c, bv.x(), bv.y(), bv.z(), bw.x(), bw.y(), bw.z(), ov.x(), ov.y(), ov.z(), qdmax, imax >= 0 ? hand.joints[hand_body->mb_link_joint[imax]].name.c_str() : "");
+      }
+      if (std::getenv("CG_DEBUG3") && s % 24 == 0) {
+        fprintf(stderr, "t %.3f dx %.4f:", time_s, moved);
+        for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+          const btPersistentManifold* pm = dispatcher->getManifoldByIndexInternal(m);
+          for (int c = 0; c < pm->getNumContacts(); ++c) {
+            const btManifoldPoint& cp = pm->getContactPoint(c);
+            fprintf(stderr, " [d %.5f fn %.2f ft %.2f %.2f mu %.2f]", cp.getDistance(), cp.m_appliedImpulse / dt, cp.m_appliedImpulseLateral1 / dt, cp.m_appliedImpulseLateral2 / dt, cp.m_combinedFriction);
+          }
+        }
+        fprintf(stderr, "\n");
+      }
       if (moved > params.drop_distance_m) return false;
     }
   }
@@ -451,7 +484,9 @@ PhaseResult GraspSimulation::close() {
     const Eigen::VectorXd q = bullet::hand_joint_positions(*s.hand_body, n);
     fprintf(stderr, "reach %d steps: dx %g rot %g contacts %d pen %g |q-qplan| %g\n", reach_steps, dx, rot, c, pen, (q - s.grasp.q).cwiseAbs().maxCoeff());
   }
-  // Squeeze: actor joints are driven past the plan with their effort limits until they stall;
+  // Squeeze: every actor joint becomes a spring with its rest point `squeeze` past the plan
+  // (not clamped: the joint limits stop the finger) and stiffness effort / squeeze, so it pushes
+  // with its full effort limit at the planned value and keeps pushing if the object gives way;
   // the other joints hold the plan.
   s.q_target = s.grasp.q;
   s.speed_cap = close_cap;
@@ -460,12 +495,9 @@ PhaseResult GraspSimulation::close() {
     const Joint& joint = s.hand.joints[static_cast<size_t>(j)];
     const double squeeze =
         joint.type == JointType::kPrismatic ? s.params.squeeze_m : s.params.squeeze_rad;
-    double target = s.grasp.q[j] + s.actor_sign[a] * squeeze;
-    if (joint.type != JointType::kContinuous) target = std::clamp(target, joint.lower, joint.upper);
-    s.q_target[j] = target;
-    // Compliant squeeze: full effort at the squeeze distance, proportionally less nearer, so
-    // fingers pushing against each other through the object find a balance.
-    s.spring_gain[j] = s.hand_body->effort_limit[static_cast<size_t>(j)] / squeeze;
+    s.q_target[j] = s.grasp.q[j] + s.actor_sign[a] * squeeze;
+    if (s.params.compliant_squeeze)
+      s.spring_gain[j] = s.hand_body->effort_limit[static_cast<size_t>(j)] / squeeze;
   }
   const int max_steps = static_cast<int>(std::lround(s.params.squeeze_max_time_s / s.dt));
   const int min_steps = static_cast<int>(std::lround(s.params.squeeze_min_time_s / s.dt));
@@ -636,10 +668,14 @@ void GraspSimulation::set_segment_hook(PhaseHook hook) { impl_->segment_hook = s
 
 std::vector<Eigen::Isometry3d> multibody_link_poses(const HandModel& hand,
                                                     const Eigen::VectorXd& q,
-                                                    const Eigen::Isometry3d& X_WB) {
+                                                    const Eigen::Isometry3d& X_WB,
+                                                    const std::vector<bool>& locked) {
   if (q.size() != static_cast<Eigen::Index>(hand.joints.size()))
     throw std::invalid_argument("multibody_link_poses: q has the wrong size");
-  auto body = bullet::make_hand_multibody(hand, bullet::HandBodyParams{});
+  bullet::HandBodyParams params;
+  params.locked = locked;
+  params.lock_values = q;
+  auto body = bullet::make_hand_multibody(hand, params);
   bullet::place_hand(*body, X_WB, q);
   return bullet::hand_link_poses(*body);
 }

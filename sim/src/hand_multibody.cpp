@@ -15,6 +15,16 @@ constexpr double kMinInertiaRatio = 1e-3;
 /// Absolute floor of principal moments [kg·m²].
 constexpr double kMinInertia_kgm2 = 1e-10;
 
+/// Motion of a moving joint at value q, in the joint frame.
+Eigen::Isometry3d joint_motion(const Joint& joint, double q) {
+  Eigen::Isometry3d M = Eigen::Isometry3d::Identity();
+  if (joint.type == JointType::kPrismatic)
+    M.translation() = q * joint.axis.normalized();
+  else if (joint.is_moving())
+    M.linear() = Eigen::AngleAxisd(q, joint.axis.normalized()).toRotationMatrix();
+  return M;
+}
+
 btQuaternion to_bt_quaternion(const Eigen::Matrix3d& R) {
   const Eigen::Quaterniond q(R);
   return btQuaternion(q.x(), q.y(), q.z(), q.w());
@@ -84,7 +94,19 @@ std::unique_ptr<HandMultiBody> make_hand_multibody(const HandModel& hand,
   std::vector<int> body_joint = {-1};  // moving joint into each body (-1: base)
   out->root_link = hand.root_link;
   out->link_body[static_cast<size_t>(hand.root_link)] = 0;
+  // Locked joints, and mimic joints whose master is locked, are merged like fixed joints.
+  std::vector<bool> lock(hand.joints.size(), false);
+  for (size_t j = 0; j < hand.joints.size() && j < params.locked.size(); ++j)
+    lock[j] = params.locked[j] && hand.joints[j].is_moving();
+  for (size_t j = 0; j < hand.joints.size(); ++j) {
+    const auto& mimic = hand.joints[j].mimic;
+    if (mimic && mimic->master_joint >= 0 &&
+        mimic->master_joint < static_cast<int>(hand.joints.size()) &&
+        lock[static_cast<size_t>(mimic->master_joint)])
+      lock[j] = hand.joints[j].is_moving();
+  }
   out->joint_mb_link.assign(hand.joints.size(), -1);
+  out->merged_q = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(hand.joints.size()));
   for (size_t j = 0; j < hand.joints.size(); ++j) {
     const Joint& joint = hand.joints[j];
     if (joint.parent_link < 0 || joint.parent_link >= num_links || joint.child_link < 0 ||
@@ -93,9 +115,13 @@ std::unique_ptr<HandMultiBody> make_hand_multibody(const HandModel& hand,
                                   "' has an unknown or unreached parent link");
     const size_t p = static_cast<size_t>(joint.parent_link);
     const size_t c = static_cast<size_t>(joint.child_link);
-    if (!joint.is_moving()) {
+    const bool locked = lock[j];
+    if (!joint.is_moving() || locked) {
       out->link_body[c] = out->link_body[p];
-      X_RL[c] = X_RL[p] * joint.X_PJ;
+      if (locked) out->merged_q[static_cast<Eigen::Index>(j)] = params.lock_values[static_cast<Eigen::Index>(j)];
+      X_RL[c] = X_RL[p] * joint.X_PJ *
+                (locked ? joint_motion(joint, params.lock_values[static_cast<Eigen::Index>(j)])
+                        : Eigen::Isometry3d::Identity());
     } else {
       out->link_body[c] = static_cast<int>(body_joint.size());
       out->joint_mb_link[j] = static_cast<int>(body_joint.size()) - 1;
@@ -125,7 +151,9 @@ std::unique_ptr<HandMultiBody> make_hand_multibody(const HandModel& hand,
 
   // The multibody: floating base, one link per moving joint.
   const BodyInertia& base = inertia[0];
-  out->mb = std::make_unique<btMultiBody>(num_bodies - 1, base.mass, to_bt(base.principal),
+  out->mb = std::make_unique<btMultiBody>(num_bodies - 1, base.mass * params.base_mass_scale,
+                                          to_bt(Eigen::Vector3d(base.principal *
+                                                                params.base_mass_scale)),
                                           /*fixedBase=*/false, /*canSleep=*/false);
   out->mb->setHasSelfCollision(false);
   out->mb->setLinearDamping(0.0);
@@ -203,7 +231,7 @@ std::unique_ptr<HandMultiBody> make_hand_multibody(const HandModel& hand,
         std::isfinite(joint.upper)) {
       auto limit = std::make_unique<btMultiBodyJointLimitConstraint>(out->mb.get(), i,
                                                                      joint.lower, joint.upper);
-      limit->setMaxAppliedImpulse(params.base_max_force_N * dt);
+      limit->setMaxAppliedImpulse(params.constraint_max_force_N * dt);
       out->limits.push_back(std::move(limit));
     }
     if (joint.mimic) {
@@ -221,7 +249,7 @@ std::unique_ptr<HandMultiBody> make_hand_multibody(const HandModel& hand,
       gear->setGearRatio(-joint.mimic->multiplier);
       gear->setRelativePositionTarget(joint.mimic->offset);
       gear->setErp(params.gear_erp);
-      gear->setMaxAppliedImpulse(params.base_max_force_N * dt);
+      gear->setMaxAppliedImpulse(params.constraint_max_force_N * dt);
       out->gears.push_back(std::move(gear));
       out->gear_joint.push_back(static_cast<int>(j));
       continue;
@@ -232,10 +260,6 @@ std::unique_ptr<HandMultiBody> make_hand_multibody(const HandModel& hand,
     out->motors.push_back(std::move(motor));
     out->motor_joint.push_back(static_cast<int>(j));
   }
-  out->base_hold = std::make_unique<btMultiBodyFixedConstraint>(
-      out->mb.get(), -1, static_cast<btRigidBody*>(nullptr), btVector3(0, 0, 0),
-      btVector3(0, 0, 0), btMatrix3x3::getIdentity(), btMatrix3x3::getIdentity());
-  out->base_hold->setMaxAppliedImpulse(params.base_max_force_N * dt);
   return out;
 }
 
@@ -290,7 +314,8 @@ std::vector<Eigen::Isometry3d> hand_link_poses(const HandMultiBody& body) {
 }
 
 Eigen::VectorXd hand_joint_positions(const HandMultiBody& body, int num_joints) {
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(num_joints);
+  Eigen::VectorXd q = body.merged_q.size() == num_joints ? body.merged_q
+                                                         : Eigen::VectorXd::Zero(num_joints);
   for (int i = 0; i < body.mb->getNumLinks(); ++i)
     q[body.mb_link_joint[static_cast<size_t>(i)]] = body.mb->getJointPos(i);
   return q;
@@ -311,11 +336,9 @@ void add_hand_to_world(HandMultiBody& body, btMultiBodyDynamicsWorld& world, int
   for (auto& c : body.limits) world.addMultiBodyConstraint(c.get());
   for (auto& c : body.gears) world.addMultiBodyConstraint(c.get());
   for (auto& c : body.motors) world.addMultiBodyConstraint(c.get());
-  world.addMultiBodyConstraint(body.base_hold.get());
 }
 
 void remove_hand_from_world(HandMultiBody& body, btMultiBodyDynamicsWorld& world) {
-  world.removeMultiBodyConstraint(body.base_hold.get());
   for (auto& c : body.motors) world.removeMultiBodyConstraint(c.get());
   for (auto& c : body.gears) world.removeMultiBodyConstraint(c.get());
   for (auto& c : body.limits) world.removeMultiBodyConstraint(c.get());

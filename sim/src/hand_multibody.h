@@ -4,7 +4,6 @@
 // wants diagonal inertias). Collision shapes come from bullet_shapes (the planner's shapes).
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
-#include <BulletDynamics/Featherstone/btMultiBodyFixedConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyGearConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
@@ -26,8 +25,15 @@ struct HandBodyParams {
   double default_effort_N = 50.0;    ///< prismatic joints without an effort limit [N]
   double effort_scale = 1.0;         ///< multiplies every effort limit
   double gear_erp = 0.5;             ///< mimic gear constraints' error reduction
-  double base_max_force_N = 2000.0;  ///< force cap of the constraint carrying the base [N]
+  double constraint_max_force_N = 2000.0;  ///< force cap of joint limits and gears [N or N·m]
+  /// Base mass and inertia × this: the base is carried like a stiff arm's flange (its velocity
+  /// is commanded each step) and contacts barely deflect it.
+  double base_mass_scale = 1000.0;
   double link_friction = 1.0;        ///< Bullet friction of the links (× the object's)
+  /// Per HandModel joint (empty: none): lock this moving joint at `lock_values[j]`, i.e. build
+  /// it as a fixed joint (merged into its parent body).
+  std::vector<bool> locked;
+  Eigen::VectorXd lock_values;
 };
 
 /// A hand as a btMultiBody with its colliders and constraints. Bodies: 0 = base (the root
@@ -38,6 +44,7 @@ struct HandMultiBody {
   std::vector<int> link_body;           ///< HandModel link → body
   std::vector<Eigen::Isometry3d> X_CL;  ///< HandModel link frame in its body's COM frame C
   std::vector<int> joint_mb_link;       ///< HandModel joint → multibody link, -1 when merged
+  Eigen::VectorXd merged_q;             ///< values of merged joints (locked ones; fixed: 0)
   std::vector<int> mb_link_joint;       ///< multibody link → HandModel joint
   std::vector<LinkShape> shapes;        ///< per body (compound nullptr: no geometry)
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders;  ///< per body, may be null
@@ -48,7 +55,6 @@ struct HandMultiBody {
   std::vector<int> motor_joint;         ///< HandModel joint of each motor
   std::vector<int> joint_motor;         ///< HandModel joint → motor index, -1 when none
   std::vector<double> effort_limit;     ///< per HandModel joint, defaults and scale applied
-  std::unique_ptr<btMultiBodyFixedConstraint> base_hold;  ///< carries the base (world frame)
   std::vector<double> body_mass_kg;     ///< per body
   double total_mass_kg = 0.0;
 };
@@ -60,7 +66,7 @@ std::unique_ptr<HandMultiBody> make_hand_multibody(const HandModel& hand,
 
 /// Puts the root link at X_WB and the joints at q (one entry per HandModel joint), velocities
 /// zero, colliders updated. Meant for initial placement only: the simulation moves the base
-/// through base_hold.
+/// by commanding its velocity.
 void place_hand(HandMultiBody& body, const Eigen::Isometry3d& X_WB, const Eigen::VectorXd& q);
 
 /// World pose of body b's COM frame.

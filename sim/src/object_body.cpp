@@ -137,7 +137,7 @@ std::unique_ptr<ObjectBody> make_object_body(const Mesh& mesh, const SimParams& 
     parts = d->parts;
   }
   if (shape == ObjectShape::kConvexHull && parts.empty())
-    parts.emplace_back(mesh.vertices.begin(), mesh.vertices.end());
+    parts.push_back(simplified_convex_hull(mesh.vertices, params.decomposition.max_hull_vertices));
   info.shape = shape;
 
   // Inertia of the collision shape (unit density), scaled to the mass about the mass's COM.

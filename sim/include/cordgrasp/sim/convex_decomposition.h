@@ -40,6 +40,12 @@ ConvexDecomposition convex_decomposition(const Mesh& mesh, const DecompositionPa
 std::shared_ptr<const ConvexDecomposition> cached_convex_decomposition(
     const Mesh& mesh, const DecompositionParams& params, const std::string& cache_dir = "");
 
+/// Vertices of the convex hull of `points`, reduced to at most `max_vertices` by HACD's
+/// incremental hull (greedily adding the point that grows the volume most), so the reduced hull
+/// lies inside the exact one and misses least volume. Fewer than 4 points: returned as given.
+std::vector<Eigen::Vector3d> simplified_convex_hull(const std::vector<Eigen::Vector3d>& points,
+                                                    int max_vertices);
+
 /// 64-bit FNV-1a hash of the mesh geometry (vertex coordinates and triangle indices), as 16 hex
 /// digits.
 std::string mesh_hash(const Mesh& mesh);

@@ -86,10 +86,12 @@ struct SimParams {
   /// prismatic joint with speed 0.1 closes at 0.1 × this m/s), capped by the URDF velocity;
   /// the reach stage's minimum-jerk paths peak at this speed.
   double close_speed = 1.5;
-  /// Squeeze: closing targets lie this far past the planned joint values [rad]...
-  double squeeze_rad = 0.1;
-  /// ...or [m] for prismatic joints (clamped to the joint limits). Less than 1 cm: fingers
-  /// planned 1 cm short of the object never reach it.
+  /// Squeeze: each actor joint is a spring whose rest point lies this far past its planned
+  /// value, stiffness effort / squeeze (full effort at the plan, less as it closes further)
+  /// [rad]...
+  double squeeze_rad = 0.5;
+  /// ...or [m] for prismatic joints. Less than 1 cm: fingers planned 1 cm short of the object
+  /// never reach it.
   double squeeze_m = 0.005;
   /// Effort limit of revolute joints whose URDF gives none (0) [N·m].
   double default_effort_Nm = 2.0;
@@ -97,14 +99,21 @@ struct SimParams {
   double default_effort_N = 50.0;
   /// Multiplies every effort limit (e.g. 0.1 for weak motors) [-].
   double effort_scale = 1.0;
+  /// Squeeze compliantly (the spring above); false: full effort until the joint reaches its
+  /// rest point.
+  bool compliant_squeeze = true;
   /// Position gain of the joint servos: commanded speed = gain × error, capped [1/s].
   double servo_gain_per_s = 20.0;
   /// Speed cap of joints that only hold their planned value [rad/s or 10× m/s].
   double hold_speed = 1.0;
+  /// Joints no actor drives (abduction, thumb opposition) are locked at their planned values,
+  /// as the planner never moves them while closing; fewer degrees of freedom, faster.
+  bool lock_passive_joints = true;
   /// Cancel gravity on the hand (the arm's controller would): only the grasp is tested.
   bool hand_gravity_compensation = true;
-  /// Impulse cap of the constraint that carries the hand base [N·s per step ÷ dt = N].
-  double base_max_force_N = 2000.0;
+  /// The arm: the hand base's mass and inertia are multiplied by this and its velocity is
+  /// commanded every step toward the trajectory, so contacts barely deflect it [-].
+  double base_mass_scale = 1000.0;
 
   // --- Protocol (issue 5) ------------------------------------------------------------------
   WorldFrame world_frame = WorldFrame::kApproachDown;

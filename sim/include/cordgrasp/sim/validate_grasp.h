@@ -94,9 +94,11 @@ class GraspSimulation {
 
 /// Link poses of the hand after building its btMultiBody (fixed joints merged, links at their
 /// principal inertia frames) for joint vector q with the root link at X_WB, read back from
-/// Bullet's forward kinematics: equal to link_poses() when the model is built right.
+/// Bullet's forward kinematics: equal to link_poses() when the model is built right. Joints
+/// flagged in `locked` (per HandModel joint) are built as fixed joints at their value in q.
 std::vector<Eigen::Isometry3d> multibody_link_poses(const HandModel& hand,
                                                     const Eigen::VectorXd& q,
-                                                    const Eigen::Isometry3d& X_WB);
+                                                    const Eigen::Isometry3d& X_WB,
+                                                    const std::vector<bool>& locked = {});
 
 }  // namespace cordgrasp
