@@ -8,7 +8,10 @@
 #include <array>
 #include <cstring>
 #include <fstream>
+#include <algorithm>
+#include <cmath>
 #include <map>
+#include <set>
 #include <mutex>
 #include <optional>
 #include <sstream>
@@ -80,7 +83,7 @@ std::string params_text(const DecompositionParams& p) {
   s.precision(17);
   s << p.concavity << ' ' << p.min_parts << ' ' << p.max_hull_vertices << ' '
     << p.compacity_weight << ' ' << p.volume_weight << ' ' << p.connect_distance << ' '
-    << p.add_extra_distance_points << ' ' << p.add_face_points;
+    << p.add_extra_distance_points << ' ' << p.add_face_points << ' ' << p.max_input_triangles;
   return s.str();
 }
 
@@ -138,6 +141,81 @@ std::mutex& hacd_mutex() {
   return m;
 }
 
+/// A vertex-clustered copy of a mesh: vertices snapped to the means of grid cells.
+struct Clustering {
+  std::vector<Eigen::Vector3d> points;       ///< cluster means
+  std::vector<Eigen::Vector3i> triangles;    ///< non-degenerate, no duplicates
+  std::vector<int> cluster_of;               ///< original vertex → cluster
+};
+
+Clustering cluster_vertices(const std::vector<Eigen::Vector3d>& points,
+                            const std::vector<Eigen::Vector3i>& triangles, double cell_m) {
+  Clustering c;
+  c.cluster_of.resize(points.size());
+  std::map<std::array<long long, 3>, int> index;
+  std::vector<int> counts;
+  for (size_t v = 0; v < points.size(); ++v) {
+    const Eigen::Vector3d& p = points[v];
+    const std::array<long long, 3> key = {static_cast<long long>(std::floor(p.x() / cell_m)),
+                                          static_cast<long long>(std::floor(p.y() / cell_m)),
+                                          static_cast<long long>(std::floor(p.z() / cell_m))};
+    auto [it, inserted] = index.emplace(key, static_cast<int>(c.points.size()));
+    if (inserted) {
+      c.points.push_back(Eigen::Vector3d::Zero());
+      counts.push_back(0);
+    }
+    c.points[static_cast<size_t>(it->second)] += p;
+    ++counts[static_cast<size_t>(it->second)];
+    c.cluster_of[v] = it->second;
+  }
+  for (size_t k = 0; k < c.points.size(); ++k) c.points[k] /= counts[k];
+  std::set<std::array<int, 3>> seen;
+  for (const Eigen::Vector3i& t : triangles) {
+    const int a = c.cluster_of[static_cast<size_t>(t[0])];
+    const int b = c.cluster_of[static_cast<size_t>(t[1])];
+    const int d = c.cluster_of[static_cast<size_t>(t[2])];
+    if (a == b || b == d || a == d) continue;
+    std::array<int, 3> key = {a, b, d};
+    std::sort(key.begin(), key.end());
+    if (!seen.insert(key).second) continue;
+    c.triangles.emplace_back(a, b, d);
+  }
+  return c;
+}
+
+/// The mesh itself when it has at most `max_triangles` triangles, else the finest grid
+/// clustering (bisection on the cell size) that has at most that many.
+Clustering cluster_for_decomposition(const std::vector<Eigen::Vector3d>& points,
+                                     const std::vector<Eigen::Vector3i>& triangles,
+                                     int max_triangles) {
+  if (max_triangles <= 0 || static_cast<int>(triangles.size()) <= max_triangles) {
+    Clustering c;
+    c.points = points;
+    c.triangles = triangles;
+    c.cluster_of.resize(points.size());
+    for (size_t v = 0; v < points.size(); ++v) c.cluster_of[v] = static_cast<int>(v);
+    return c;
+  }
+  Eigen::Vector3d lo = points.front(), hi = points.front();
+  for (const auto& p : points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  double fine = 0.0, coarse = (hi - lo).norm();
+  Clustering best = cluster_vertices(points, triangles, coarse);
+  for (int iteration = 0; iteration < 20; ++iteration) {
+    const double mid = 0.5 * (fine + coarse);
+    Clustering c = cluster_vertices(points, triangles, mid);
+    if (static_cast<int>(c.triangles.size()) <= max_triangles) {
+      coarse = mid;
+      best = std::move(c);
+    } else {
+      fine = mid;
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 std::vector<Eigen::Vector3d> simplified_convex_hull(const std::vector<Eigen::Vector3d>& points,
@@ -189,17 +267,34 @@ ConvexDecomposition convex_decomposition(const Mesh& mesh, const DecompositionPa
     throw std::invalid_argument("convex_decomposition: mesh '" + mesh.name +
                                 "' has no triangles");
   const auto start = std::chrono::steady_clock::now();
-  std::vector<HACD::Vec3<HACD::Real>> points;
-  std::vector<HACD::Vec3<long>> triangles;
-  weld(mesh, points, triangles);
+  std::vector<HACD::Vec3<HACD::Real>> welded;
+  std::vector<HACD::Vec3<long>> welded_triangles;
+  weld(mesh, welded, welded_triangles);
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(welded.size());
+  for (const auto& p : welded) points.emplace_back(p.X(), p.Y(), p.Z());
+  std::vector<Eigen::Vector3i> triangles;
+  triangles.reserve(welded_triangles.size());
+  for (const auto& t : welded_triangles)
+    triangles.emplace_back(static_cast<int>(t.X()), static_cast<int>(t.Y()),
+                           static_cast<int>(t.Z()));
+  // HACD's cost grows much faster than linearly: decompose a vertex-clustered copy and build
+  // each part's hull from the original vertices of its clusters.
+  const Clustering clusters = cluster_for_decomposition(points, triangles,
+                                                        params.max_input_triangles);
   ConvexDecomposition out;
-  if (triangles.size() >= 2) {
+  std::vector<std::vector<Eigen::Vector3d>> parts;
+  if (clusters.triangles.size() >= 2) {
+    std::vector<HACD::Vec3<HACD::Real>> hp;
+    for (const auto& p : clusters.points) hp.emplace_back(p.x(), p.y(), p.z());
+    std::vector<HACD::Vec3<long>> ht;
+    for (const auto& t : clusters.triangles) ht.emplace_back(t[0], t[1], t[2]);
     const std::lock_guard<std::mutex> lock(hacd_mutex());
     HACD::HACD hacd;
-    hacd.SetPoints(points.data());
-    hacd.SetNPoints(points.size());
-    hacd.SetTriangles(triangles.data());
-    hacd.SetNTriangles(triangles.size());
+    hacd.SetPoints(hp.data());
+    hacd.SetNPoints(hp.size());
+    hacd.SetTriangles(ht.data());
+    hacd.SetNTriangles(ht.size());
     hacd.SetScaleFactor(kHacdScale);
     hacd.SetCompacityWeight(params.compacity_weight);
     hacd.SetVolumeWeight(params.volume_weight);
@@ -214,24 +309,34 @@ ConvexDecomposition convex_decomposition(const Mesh& mesh, const DecompositionPa
     hacd.SetAddFacesPoints(params.add_face_points);
     hacd.SetAddNeighboursDistPoints(false);
     if (hacd.Compute()) {
-      for (size_t c = 0; c < hacd.GetNClusters(); ++c) {
-        const size_t np = hacd.GetNPointsCH(c);
-        const size_t nt = hacd.GetNTrianglesCH(c);
-        if (np < 4) continue;
-        std::vector<HACD::Vec3<HACD::Real>> hp(np);
-        std::vector<HACD::Vec3<long>> ht(std::max<size_t>(nt, 1));
-        hacd.GetCH(c, hp.data(), ht.data());
+      const long* partition = hacd.GetPartition();
+      const size_t n_parts = hacd.GetNClusters();
+      // Original vertices of every cluster vertex used by each part's triangles.
+      std::vector<std::vector<int>> members(clusters.points.size());
+      for (size_t v = 0; v < clusters.cluster_of.size(); ++v)
+        members[static_cast<size_t>(clusters.cluster_of[v])].push_back(static_cast<int>(v));
+      std::vector<std::vector<char>> used(n_parts, std::vector<char>(clusters.points.size(), 0));
+      for (size_t t = 0; t < clusters.triangles.size(); ++t) {
+        const long p = partition[t];
+        if (p < 0 || static_cast<size_t>(p) >= n_parts) continue;
+        for (int k = 0; k < 3; ++k) used[static_cast<size_t>(p)][static_cast<size_t>(
+            clusters.triangles[t][k])] = 1;
+      }
+      for (size_t p = 0; p < n_parts; ++p) {
         std::vector<Eigen::Vector3d> part;
-        part.reserve(np);
-        for (const auto& p : hp) part.emplace_back(p.X(), p.Y(), p.Z());
-        out.parts.push_back(std::move(part));
+        for (size_t c = 0; c < clusters.points.size(); ++c)
+          if (used[p][c])
+            for (int v : members[c]) part.push_back(points[static_cast<size_t>(v)]);
+        if (part.size() >= 4) parts.push_back(std::move(part));
       }
     }
   }
-  if (out.parts.empty()) {  // HACD failed or the mesh is tiny: the whole mesh's hull
-    std::vector<Eigen::Vector3d> all(mesh.vertices.begin(), mesh.vertices.end());
-    out.parts.push_back(std::move(all));
+  for (auto& part : parts) {
+    auto hull = simplified_convex_hull(part, params.max_hull_vertices);
+    if (hull.size() >= 4) out.parts.push_back(std::move(hull));
   }
+  if (out.parts.empty())  // HACD failed or the mesh is tiny: the whole mesh's hull
+    out.parts.push_back(simplified_convex_hull(points, params.max_hull_vertices));
   out.compute_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

@@ -5,8 +5,6 @@
 
 
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <stdexcept>
 
@@ -109,6 +107,7 @@ struct GraspSimulation::Impl {
   /// Spring gain of compliant servos [N·m/rad or N/m]: the effort is capped at gain × error
   /// (0: rigid servo, capped at the effort limit only).
   Eigen::VectorXd spring_gain;
+  double squeeze_fraction = 1.0;  ///< ramps the springs' effort in at the start of the squeeze
   std::vector<int> actor_joints;     ///< driven joints of the actors
   std::vector<double> actor_sign;    ///< +1/−1: direction that closes
   std::vector<double> actor_speed;   ///< |direction_speed|
@@ -204,6 +203,8 @@ GraspSimulation::Impl::Impl(const Mesh& mesh, const HandModel& h, const Grasp& g
   hp.effort_scale = params.effort_scale;
   hp.gear_erp = params.gear_erp;
   hp.base_mass_scale = params.base_mass_scale;
+  hp.armature_kgm2 = params.armature_kgm2;
+  hp.armature_kg = params.armature_kg;
   if (params.lock_passive_joints) {
     // Joints no actor drives (abduction, opposition) stay at their planned values, as in the
     // planner's closing; mimic joints follow their master's fate.
@@ -275,7 +276,8 @@ void GraspSimulation::Impl::step(const Eigen::Isometry3d& X_WB_next) {
         std::clamp(qd_feedforward[j] + params.servo_gain_per_s * error, -cap, cap);
     hand_body->motors[k]->setVelocityTarget(speed, 1.0);
     double effort = hand_body->effort_limit[static_cast<size_t>(j)];
-    if (spring_gain[j] > 0.0) effort = std::min(effort, spring_gain[j] * std::abs(error));
+    if (spring_gain[j] > 0.0)
+      effort = squeeze_fraction * std::min(effort, spring_gain[j] * std::abs(error));
     hand_body->motors[k]->setMaxAppliedImpulse(effort * dt);
   }
 
@@ -389,26 +391,6 @@ bool GraspSimulation::Impl::run(double duration, const Trajectory& trajectory) {
     if (closed && current) {
       const double moved = pose_change(X_BO_ref, nullptr);
       current->max_translation_m = std::max(current->max_translation_m, moved);
-      if (std::getenv("CG_DEBUG2") && s % 6 == 0) {
-        double rot = 0; const double dx = pose_change(X_BO_ref, &rot);
-        int c = 0; double pen = 0; contacts(c, pen);
-        const btVector3 bv = hand_body->mb->getBaseVel();
-        const btVector3 ov = object->body->getLinearVelocity();
-        const btVector3 bw = hand_body->mb->getBaseOmega();
-        double qdmax = 0; int imax = -1; for (int i = 0; i < hand_body->mb->getNumLinks(); ++i) if (std::abs(hand_body->mb->getJointVel(i)) > qdmax) { qdmax = std::abs(hand_body->mb->getJointVel(i)); imax = i; }
-        fprintf(stderr, "t %.3f dx %.4f rot %.3f contacts %d base v %.3f %.3f %.3f w %.3f %.3f %.3f obj v %.3f %.3f %.3f qdmax %.2f (%s)\n", time_s, dx, rot, c, bv.x(), bv.y(), bv.z(), bw.x(), bw.y(), bw.z(), ov.x(), ov.y(), ov.z(), qdmax, imax >= 0 ? hand.joints[hand_body->mb_link_joint[imax]].name.c_str() : "");
-      }
-      if (std::getenv("CG_DEBUG3") && s % 24 == 0) {
-        fprintf(stderr, "t %.3f dx %.4f:", time_s, moved);
-        for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
-          const btPersistentManifold* pm = dispatcher->getManifoldByIndexInternal(m);
-          for (int c = 0; c < pm->getNumContacts(); ++c) {
-            const btManifoldPoint& cp = pm->getContactPoint(c);
-            fprintf(stderr, " [d %.5f fn %.2f ft %.2f %.2f mu %.2f]", cp.getDistance(), cp.m_appliedImpulse / dt, cp.m_appliedImpulseLateral1 / dt, cp.m_appliedImpulseLateral2 / dt, cp.m_combinedFriction);
-          }
-        }
-        fprintf(stderr, "\n");
-      }
       if (moved > params.drop_distance_m) return false;
     }
   }
@@ -477,13 +459,6 @@ PhaseResult GraspSimulation::close() {
     s.step(X_WB0);
   }
   s.qd_feedforward.setZero();
-  if (std::getenv("CG_DEBUG")) {
-    double rot = 0;
-    const double dx = s.pose_change(s.grasp.X_OB.inverse(), &rot);
-    int c = 0; double pen = 0; s.contacts(c, pen);
-    const Eigen::VectorXd q = bullet::hand_joint_positions(*s.hand_body, n);
-    fprintf(stderr, "reach %d steps: dx %g rot %g contacts %d pen %g |q-qplan| %g\n", reach_steps, dx, rot, c, pen, (q - s.grasp.q).cwiseAbs().maxCoeff());
-  }
   // Squeeze: every actor joint becomes a spring with its rest point `squeeze` past the plan
   // (not clamped: the joint limits stop the finger) and stiffness effort / squeeze, so it pushes
   // with its full effort limit at the planned value and keeps pushing if the object gives way;
@@ -504,32 +479,16 @@ PhaseResult GraspSimulation::close() {
   const int stall_steps = std::max(1, static_cast<int>(std::lround(s.params.stall_time_s / s.dt)));
   int stalled = 0;
   for (int k = 1; k <= max_steps && !s.blew_up; ++k) {
+    s.squeeze_fraction = std::min(1.0, k * s.dt / std::max(s.params.squeeze_ramp_s, s.dt));
     s.step(X_WB0);
     const Eigen::VectorXd qd = bullet::hand_joint_velocities(*s.hand_body, n);
     bool still = true;
     for (size_t a = 0; a < s.actor_joints.size(); ++a)
       if (std::abs(qd[s.actor_joints[a]]) > s.params.stall_speed * s.actor_speed[a]) still = false;
     stalled = still ? stalled + 1 : 0;
-    if (std::getenv("CG_DEBUG") && k % 10 == 0) {
-      double rot = 0;
-      const double dx = s.pose_change(s.grasp.X_OB.inverse(), &rot);
-      const Eigen::VectorXd q = bullet::hand_joint_positions(*s.hand_body, n);
-      fprintf(stderr, "  squeeze %d dx %.4f rot %.3f |", k, dx, rot);
-      for (size_t a = 0; a < s.actor_joints.size(); ++a) { int j = s.actor_joints[a]; fprintf(stderr, " %s %.3f->%.3f (%.2f)", s.hand.joints[j].name.c_str(), q[j], s.q_target[j], qd[j]); }
-      fprintf(stderr, "\n    contacts:");
-      for (int m = 0; m < s.dispatcher->getNumManifolds(); ++m) {
-        const btPersistentManifold* pm = s.dispatcher->getManifoldByIndexInternal(m);
-        if (pm->getNumContacts() == 0) continue;
-        const btCollisionObject* other = pm->getBody0() == s.object->body.get() ? pm->getBody1() : pm->getBody0();
-        for (size_t b = 0; b < s.hand_body->colliders.size(); ++b) if (s.hand_body->colliders[b].get() == other) {
-          for (size_t l = 0; l < s.hand.links.size(); ++l) if (s.hand_body->link_body[l] == (int)b && !s.hand.links[l].collisions.empty()) fprintf(stderr, " %s(%d,%.4f)", s.hand.links[l].name.c_str(), pm->getNumContacts(), pm->getContactPoint(0).getDistance());
-        }
-      }
-      const btVector3 v = s.object->body->getLinearVelocity();
-      fprintf(stderr, " | v %.3f %.3f %.3f\n", v.x(), v.y(), v.z());
-    }
-    if (k >= min_steps && stalled >= stall_steps) break;
+    if (k >= min_steps && stalled >= stall_steps && s.squeeze_fraction >= 1.0) break;
   }
+  s.squeeze_fraction = 1.0;
   s.finish(r, s.grasp.X_OB.inverse(), start);
   // Closing is judged by contact only; the object may well move while the fingers close.
   if (r.outcome == Outcome::kSlipped) r.outcome = Outcome::kHeld;

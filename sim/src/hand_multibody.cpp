@@ -39,7 +39,8 @@ struct BodyInertia {
 };
 
 BodyInertia body_inertia(const HandModel& hand, const std::vector<int>& members,
-                         const std::vector<Eigen::Isometry3d>& X_RL) {
+                         const std::vector<Eigen::Isometry3d>& X_RL, const Joint* joint,
+                         double armature_kgm2, double armature_kg) {
   BodyInertia out;
   Eigen::Vector3d mc = Eigen::Vector3d::Zero();
   for (int l : members) {
@@ -67,6 +68,14 @@ BodyInertia body_inertia(const HandModel& hand, const std::vector<int>& members,
   if (out.mass < kMinBodyMass_kg) {
     out.mass = kMinBodyMass_kg;
     I = Eigen::Matrix3d::Identity() * (0.4 * kMinBodyMass_kg * 0.005 * 0.005);
+  }
+  // Reflected actuator inertia: about the joint axis (the body's frame R is the joint frame at
+  // q = 0), or as mass for a prismatic joint (its weight is compensated like the rest).
+  if (joint && joint->type == JointType::kPrismatic) {
+    out.mass += armature_kg;
+  } else if (joint && joint->is_moving()) {
+    const Eigen::Vector3d a = joint->axis.normalized();
+    I += armature_kgm2 * a * a.transpose();
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (I + I.transpose()));
   Eigen::Matrix3d V = eig.eigenvectors();
@@ -141,7 +150,11 @@ std::unique_ptr<HandMultiBody> make_hand_multibody(const HandModel& hand,
   std::vector<BodyInertia> inertia(static_cast<size_t>(num_bodies));
   out->X_CL.assign(static_cast<size_t>(num_links), Eigen::Isometry3d::Identity());
   for (int b = 0; b < num_bodies; ++b) {
-    inertia[static_cast<size_t>(b)] = body_inertia(hand, members[static_cast<size_t>(b)], X_RL);
+    const int bj = body_joint[static_cast<size_t>(b)];
+    inertia[static_cast<size_t>(b)] =
+        body_inertia(hand, members[static_cast<size_t>(b)], X_RL,
+                     bj >= 0 ? &hand.joints[static_cast<size_t>(bj)] : nullptr,
+                     params.armature_kgm2, params.armature_kg);
     for (int l : members[static_cast<size_t>(b)])
       out->X_CL[static_cast<size_t>(l)] =
           inertia[static_cast<size_t>(b)].X_RC.inverse() * X_RL[static_cast<size_t>(l)];
@@ -260,6 +273,18 @@ std::unique_ptr<HandMultiBody> make_hand_multibody(const HandModel& hand,
     out->motors.push_back(std::move(motor));
     out->motor_joint.push_back(static_cast<int>(j));
   }
+  // A coupled set is driven by its master's actuator: the mimic joints' effort limits add to
+  // the master's (their gears pass the torque on), so the set keeps the URDF's total capacity.
+  if (params.pool_mimic_efforts)
+    for (size_t k = 0; k < out->gears.size(); ++k) {
+      const Joint& slave = hand.joints[static_cast<size_t>(out->gear_joint[k])];
+      const int master = slave.mimic->master_joint;
+      if (out->joint_motor[static_cast<size_t>(master)] >= 0)
+        out->effort_limit[static_cast<size_t>(master)] +=
+            std::abs(slave.mimic->multiplier) * out->effort_limit[static_cast<size_t>(out->gear_joint[k])];
+    }
+  for (size_t k = 0; k < out->motors.size(); ++k)
+    out->motors[k]->setMaxAppliedImpulse(out->effort_limit[static_cast<size_t>(out->motor_joint[k])] * dt);
   return out;
 }
 

@@ -30,6 +30,12 @@ struct HandBodyParams {
   /// is commanded each step) and contacts barely deflect it.
   double base_mass_scale = 1000.0;
   double link_friction = 1.0;        ///< Bullet friction of the links (× the object's)
+  bool pool_mimic_efforts = true;    ///< mimic joints' effort limits add to their master's
+  /// Reflected actuator inertia added to every moving joint's body: about the axis of a
+  /// revolute joint [kg·m²] ...
+  double armature_kgm2 = 0.0;
+  /// ... or as mass of a prismatic joint's body [kg].
+  double armature_kg = 0.0;
   /// Per HandModel joint (empty: none): lock this moving joint at `lock_values[j]`, i.e. build
   /// it as a fixed joint (merged into its parent body).
   std::vector<bool> locked;

@@ -224,6 +224,9 @@ std::unique_ptr<ObjectBody> make_object_body(const Mesh& mesh, const SimParams& 
   out->body = std::make_unique<btRigidBody>(ci);
   out->body->setCollisionFlags(out->body->getCollisionFlags() |
                                btCollisionObject::CF_HAS_FRICTION_ANCHOR);
+  if (params.contact_stiffness_Npm > 0.0)
+    out->body->setContactStiffnessAndDamping(params.contact_stiffness_Npm,
+                                             params.contact_damping_Nspm);
   out->body->setActivationState(DISABLE_DEACTIVATION);
   out->body->setSleepingThresholds(0.0, 0.0);
   return out;

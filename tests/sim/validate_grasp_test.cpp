@@ -1,8 +1,11 @@
+// Physics validation (issue 5): the parallel gripper on a box, friction, reach and motor
+// strength; determinism; object mass properties; parameter parsing.
 #include "cordgrasp/sim/validate_grasp.h"
 
 #include <gtest/gtest.h>
 
-#include <iostream>
+#include <algorithm>
+#include <cmath>
 
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/shapes.h"
@@ -12,27 +15,170 @@ namespace cordgrasp {
 namespace {
 
 constexpr double kBoxSide_m = 0.05;
+constexpr double kOpenGripper_m = 0.05;        ///< preshape: pads 5 cm from the centre plane
+constexpr double kShortOfFaces_m = 0.01;       ///< "fingers 1 cm short of the faces"
+constexpr double kHeavyBox_kg = 5.0;           ///< weight 49 N
+// The gripper's coupled pads push with 80 N each (its URDF efforts); with μ = 0.5 two pads hold
+// up to 2·μ·80·scale N: the threshold for 5 kg is an effort scale of 0.61.
+constexpr double kWeakMotors = 0.45;           ///< 36 N of friction < 49 N: slips
+constexpr double kStrongMotors = 0.8;          ///< 64 N of friction > 49 N: holds
+constexpr double kInertiaRelTol = 1e-9;
 
-void print(const SimResult& r) {
-  std::cout << "outcome " << to_string(r.outcome) << " mass " << r.object.mass_kg << " shape "
-            << to_string(r.object.shape) << " parts " << r.object.parts << " wall "
-            << r.wall_time_s << "\n";
-  for (const auto& p : r.phases)
-    std::cout << "  " << p.name << ": " << to_string(p.outcome) << " [" << p.detail << "] dx "
-              << p.translation_m << " rot " << p.rotation_rad << " maxdx " << p.max_translation_m
-              << " contacts " << p.contact_count << "/" << p.max_contact_count << " pen "
-              << p.max_penetration_m << " t " << p.sim_time_s << " wall " << p.wall_time_s
-              << " steps " << p.steps << "\n";
+const HandModel& gripper() {
+  static const HandModel hand = load_hand("parallel_gripper");
+  return hand;
 }
 
-TEST(ValidateGrasp, ParallelGripperPinchingABoxAtItsCentreHolds) {
-  const HandModel hand = load_hand("parallel_gripper");
-  const Mesh box = make_box_mesh(Eigen::Vector3d::Constant(kBoxSide_m));
-  const Grasp grasp =
-      test::top_down_pinch(hand, Eigen::Vector3d::Zero(), 0.5 * kBoxSide_m, 0.05);
-  const SimResult r = validate_grasp(box, hand, grasp, SimParams{});
-  print(r);
+const Mesh& box() {
+  static const Mesh mesh = make_box_mesh(Eigen::Vector3d::Constant(kBoxSide_m));
+  return mesh;
+}
+
+/// The gripper pinching the box at its centre, pads `short_m` short of the faces.
+Grasp centre_pinch(double short_m = 0.0) {
+  return test::top_down_pinch(gripper(), Eigen::Vector3d::Zero(), 0.5 * kBoxSide_m + short_m,
+                              kOpenGripper_m);
+}
+
+TEST(ValidateGrasp, ParallelGripperPinchingABoxAtItsCentreHoldsThroughEveryTest) {
+  const SimResult r = validate_grasp(box(), gripper(), centre_pinch(), SimParams{});
   EXPECT_EQ(r.outcome, Outcome::kHeld);
+  for (const char* name : {"settle", "close", "lift", "shake", "gravity6"}) {
+    const PhaseResult* p = r.phase(name);
+    ASSERT_NE(p, nullptr) << name;
+    EXPECT_EQ(p->outcome, Outcome::kHeld) << name << " " << p->detail;
+    EXPECT_GT(p->steps, 0) << name;
+  }
+  const PhaseResult& lift = *r.phase("lift");
+  EXPECT_TRUE(lift.in_contact);
+  EXPECT_GE(lift.contact_count, 2);
+  EXPECT_LT(lift.translation_m, SimParams{}.held_translation_m);
+  EXPECT_LT(lift.max_penetration_m, 1e-3);
+  // The fingers squeeze: the driven joint pushes (negative = closing for this gripper).
+  const int j = find_joint(gripper(), "left_finger_joint");
+  EXPECT_LT(lift.joint_efforts[static_cast<size_t>(j)], -1.0);
+  EXPECT_NEAR(r.object.mass_kg, SimParams{}.density_kgm3 * std::pow(kBoxSide_m, 3), 1e-12);
+}
+
+TEST(ValidateGrasp, PinchWithoutFrictionDrops) {
+  SimParams params;
+  params.contact.mu = 0.0;
+  const SimResult r = validate_grasp(box(), gripper(), centre_pinch(), params);
+  EXPECT_EQ(r.outcome, Outcome::kDropped);
+}
+
+TEST(ValidateGrasp, FingersOneCentimetreShortOfTheFacesDrop) {
+  const SimResult r = validate_grasp(box(), gripper(), centre_pinch(kShortOfFaces_m), SimParams{});
+  EXPECT_EQ(r.outcome, Outcome::kDropped);
+  const PhaseResult* close = r.phase("close");
+  ASSERT_NE(close, nullptr);
+  EXPECT_FALSE(close->in_contact);
+}
+
+TEST(ValidateGrasp, HeavyBoxSlipsWhenFrictionFromTheGripIsBelowItsWeightOnly) {
+  SimParams params;
+  params.mass_kg = kHeavyBox_kg;
+  const SimTests lift_only{true, false, false};
+  params.effort_scale = kWeakMotors;
+  const SimResult weak = validate_grasp(box(), gripper(), centre_pinch(), params, lift_only);
+  EXPECT_NE(weak.outcome, Outcome::kHeld);
+  EXPECT_NE(weak.outcome, Outcome::kUnstable);
+  const PhaseResult* lift = weak.phase("lift");
+  ASSERT_NE(lift, nullptr);
+  EXPECT_GT(lift->max_translation_m, params.held_translation_m);
+  params.effort_scale = kStrongMotors;
+  const SimResult strong = validate_grasp(box(), gripper(), centre_pinch(), params, lift_only);
+  EXPECT_EQ(strong.outcome, Outcome::kHeld);
+}
+
+TEST(ValidateGrasp, SamePlanAndParametersGiveIdenticalResults) {
+  const SimTests tests{true, true, false};
+  const SimResult a = validate_grasp(box(), gripper(), centre_pinch(), SimParams{}, tests);
+  const SimResult b = validate_grasp(box(), gripper(), centre_pinch(), SimParams{}, tests);
+  ASSERT_EQ(a.phases.size(), b.phases.size());
+  EXPECT_EQ(a.outcome, b.outcome);
+  for (size_t k = 0; k < a.phases.size(); ++k) {
+    const PhaseResult& p = a.phases[k];
+    const PhaseResult& q = b.phases[k];
+    EXPECT_EQ(p.outcome, q.outcome) << p.name;
+    EXPECT_EQ(p.translation_m, q.translation_m) << p.name;
+    EXPECT_EQ(p.rotation_rad, q.rotation_rad) << p.name;
+    EXPECT_EQ(p.max_penetration_m, q.max_penetration_m) << p.name;
+    EXPECT_EQ(p.contact_count, q.contact_count) << p.name;
+    EXPECT_EQ(p.joint_efforts, q.joint_efforts) << p.name;
+    EXPECT_EQ(p.steps, q.steps) << p.name;
+  }
+}
+
+TEST(ValidateGrasp, HookSeesEveryPhaseEndWithAllLinkPoses) {
+  std::vector<std::string> phases;
+  const SimTests tests{true, false, false};
+  validate_grasp(box(), gripper(), centre_pinch(), SimParams{}, tests,
+                 [&](const PhaseSnapshot& s) {
+                   phases.push_back(s.phase);
+                   EXPECT_EQ(s.X_WL.size(), gripper().links.size());
+                   EXPECT_EQ(s.q.size(), static_cast<Eigen::Index>(gripper().joints.size()));
+                 });
+  EXPECT_EQ(phases, (std::vector<std::string>{"settle", "close", "lift"}));
+}
+
+TEST(ValidateGrasp, WorldFrameTurnsTheApproachDownAndTheHandRisesDuringLift) {
+  const Grasp grasp = centre_pinch();
+  Eigen::Isometry3d X_WB_close, X_WB_lift;
+  const SimTests tests{true, false, false};
+  const SimResult r = validate_grasp(box(), gripper(), grasp, SimParams{}, tests,
+                                     [&](const PhaseSnapshot& s) {
+                                       if (s.phase == "close") X_WB_close = s.X_WL[static_cast<size_t>(gripper().root_link)];
+                                       if (s.phase == "lift") X_WB_lift = s.X_WL[static_cast<size_t>(gripper().root_link)];
+                                     });
+  // Approach (+z of the GCP) along −z of the world.
+  const Eigen::Vector3d z_G = (r.X_WO * grasp.X_OG).linear().col(2);
+  EXPECT_NEAR(z_G.z(), -1.0, 1e-12);
+  EXPECT_NEAR((X_WB_lift.translation() - X_WB_close.translation()).z(),
+              SimParams{}.lift_height_m, 1e-3);
+}
+
+TEST(ValidateGrasp, BoxInertiaIsTheSolidBoxs) {
+  const Eigen::Vector3d size(0.04, 0.06, 0.1);
+  const Mesh mesh = make_box_mesh(size);
+  SimParams params;
+  params.mass_kg = 0.3;
+  const SimResult r = validate_grasp(mesh, gripper(), centre_pinch(kShortOfFaces_m), params,
+                                     SimTests{false, false, false});
+  const double m = *params.mass_kg;
+  std::vector<double> expected = {m / 12 * (size.y() * size.y() + size.z() * size.z()),
+                                  m / 12 * (size.x() * size.x() + size.z() * size.z()),
+                                  m / 12 * (size.x() * size.x() + size.y() * size.y())};
+  std::vector<double> got(r.object.principal_inertia_kgm2.data(),
+                          r.object.principal_inertia_kgm2.data() + 3);
+  std::sort(expected.begin(), expected.end());
+  std::sort(got.begin(), got.end());
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(got[a], expected[a], kInertiaRelTol * expected[a]);
+  EXPECT_EQ(r.object.shape, ObjectShape::kConvexHull);
+  EXPECT_TRUE(r.object.closed);
+}
+
+TEST(ValidateGrasp, ThrowsWhenTheJointVectorsDoNotFitTheHand) {
+  Grasp g = centre_pinch();
+  g.q.resize(1);
+  EXPECT_THROW(validate_grasp(box(), gripper(), g, SimParams{}), std::invalid_argument);
+}
+
+TEST(SimTestsFromString, ParsesSubsetsAndRejectsUnknownNames) {
+  const SimTests t = sim_tests_from_string("shake,lift");
+  EXPECT_TRUE(t.lift);
+  EXPECT_TRUE(t.shake);
+  EXPECT_FALSE(t.gravity6);
+  EXPECT_EQ(to_string(t), "lift,shake");
+  EXPECT_THROW(sim_tests_from_string("lift,wobble"), std::invalid_argument);
+  EXPECT_THROW(sim_tests_from_string(""), std::invalid_argument);
+}
+
+TEST(ObjectShapeFromString, RoundTripsEveryShape) {
+  for (ObjectShape s : {ObjectShape::kAuto, ObjectShape::kConvexHull, ObjectShape::kDecomposition,
+                        ObjectShape::kGImpact})
+    EXPECT_EQ(object_shape_from_string(to_string(s)), s);
+  EXPECT_THROW(object_shape_from_string("vhacd"), std::invalid_argument);
 }
 
 }  // namespace

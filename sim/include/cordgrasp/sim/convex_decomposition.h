@@ -20,6 +20,10 @@ struct DecompositionParams {
   double connect_distance = 0.01;
   bool add_extra_distance_points = true;  ///< HACD: rays through the object (slow, robust)
   bool add_face_points = true;            ///< HACD: face centres as distance points
+  /// HACD runs on a vertex-clustered copy with at most this many triangles (its cost grows
+  /// much faster than linearly); each part's hull is then built from the original vertices
+  /// of its clusters. ≤ 0: no clustering.
+  int max_input_triangles = 800;
 };
 
 /// Convex parts of a mesh, in the mesh frame.
@@ -29,8 +33,10 @@ struct ConvexDecomposition {
   bool from_cache = false;  ///< served from the memory or disk cache
 };
 
-/// HACD decomposition of a triangle soup (vertices welded at identical coordinates first).
-/// A mesh HACD cannot handle gives one part: its convex hull. Deterministic.
+/// HACD decomposition of a triangle soup (vertices welded at identical coordinates first,
+/// clustered down to max_input_triangles); part hulls are reduced to max_hull_vertices
+/// (simplified_convex_hull). A mesh HACD cannot handle gives one part: its convex hull.
+/// Deterministic.
 /// @throws std::invalid_argument for an empty mesh.
 ConvexDecomposition convex_decomposition(const Mesh& mesh, const DecompositionParams& params);
 

@@ -51,6 +51,11 @@ struct SimParams {
   int solver_iterations = 50;
   /// Error reduction of contacts and joint constraints (Bullet erp, erp2) [0..1].
   double erp = 0.2;
+  /// Contact stiffness of finger–object contacts [N/m] (0: rigid contacts with erp/cfm).
+  /// Compliant contacts penetrate force/stiffness and let the solver converge at large steps.
+  double contact_stiffness_Npm = 0.0;
+  /// Contact damping [N·s/m] (with contact_stiffness_Npm > 0).
+  double contact_damping_Nspm = 0.0;
   /// Error reduction of friction anchors [0..1].
   double friction_erp = 0.2;
   /// Constraint force mixing (softness) of every constraint [-].
@@ -106,6 +111,11 @@ struct SimParams {
   double servo_gain_per_s = 20.0;
   /// Speed cap of joints that only hold their planned value [rad/s or 10× m/s].
   double hold_speed = 1.0;
+  /// Reflected actuator (rotor × gear²) inertia added about every revolute joint [kg·m²]:
+  /// real finger drives have it, and it keeps light links from slowing the solver down.
+  double armature_kgm2 = 1e-3;
+  /// The same for prismatic joints, as mass [kg].
+  double armature_kg = 0.5;
   /// Joints no actor drives (abduction, thumb opposition) are locked at their planned values,
   /// as the planner never moves them while closing; fewer degrees of freedom, faster.
   bool lock_passive_joints = true;
@@ -120,6 +130,7 @@ struct SimParams {
   double gravity_mps2 = 9.81;         ///< magnitude, along −z_W in lift/shake
   double settle_time_s = 0.05;        ///< settle: gravity off, preshape held
   double squeeze_max_time_s = 0.5;    ///< close: squeeze stage time limit
+  double squeeze_ramp_s = 0.1;        ///< close: the squeeze effort ramps in linearly over this
   double squeeze_min_time_s = 0.05;   ///< close: stall is not tested before this
   /// close: actor joints slower than this × their |direction_speed| [rad/s or m/s]...
   double stall_speed = 0.02;

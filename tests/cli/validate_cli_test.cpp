@@ -1,0 +1,170 @@
+// `cordgrasp validate`: a plan.json written here (the parallel gripper pinching the shipped
+// box), its sim.json, the summary lines, and the errors for mismatched inputs.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cordgrasp/core/hand_io.h"
+#include "cordgrasp/core/kinematics.h"
+#include "test_paths.h"
+
+namespace cordgrasp {
+namespace {
+
+using test::run_cordgrasp;
+using test::source_dir;
+
+constexpr double kBoxHalfWidth_m = 0.025;  ///< assets/objects/box.obj: 5 × 5 × 8 cm, z ≥ 0
+constexpr double kBoxCentreZ_m = 0.04;
+constexpr std::uint64_t kPlanSeed = 7;
+
+nlohmann::json pose_json(const Eigen::Isometry3d& X) {
+  const Eigen::Quaterniond q(X.linear());
+  return {{"position_m", {X.translation().x(), X.translation().y(), X.translation().z()}},
+          {"quaternion_wxyz", {q.w(), q.x(), q.y(), q.z()}}};
+}
+
+class ValidateCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("cordgrasp_validate_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(dir_);
+    write_plan(plan_path(), 2);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::string plan_path() const { return (dir_ / "plan.json").string(); }
+  std::string out_path() const { return (dir_ / "sim.json").string(); }
+  std::string box_path() const { return source_dir() + "/assets/objects/box.obj"; }
+
+  /// A plan for the shipped parallel gripper: `grasps` copies of a top-down pinch at the box
+  /// centre (pads on the ±x faces).
+  void write_plan(const std::string& path, int grasps) const {
+    const HandModel hand = load_hand("parallel_gripper");
+    Eigen::Isometry3d X_OG = Eigen::Isometry3d::Identity();
+    X_OG.linear() = Eigen::Vector3d(1, -1, -1).asDiagonal();
+    X_OG.translation() = Eigen::Vector3d(0, 0, kBoxCentreZ_m);
+    Eigen::VectorXd q = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(hand.joints.size()));
+    q[find_joint(hand, "left_finger_joint")] = kBoxHalfWidth_m;
+    q = apply_couplings(hand, q);
+    const Eigen::Isometry3d X_OB = root_pose_for_gcp(hand, q, X_OG);
+    nlohmann::json grasp = {
+        {"hand_pose", pose_json(X_OB)},
+        {"gcp_pose", pose_json(X_OG)},
+        {"joints",
+         {{"left_finger_joint", q[find_joint(hand, "left_finger_joint")]},
+          {"right_finger_joint", q[find_joint(hand, "right_finger_joint")]}}},
+        {"preshape_joints", {{"left_finger_joint", 0.05}, {"right_finger_joint", 0.05}}},
+        {"contacts", nlohmann::json::array()},
+        {"force_closure", true},
+        {"epsilon", 0.1},
+        {"alpha_rad", 0.0}};
+    nlohmann::json plan = {
+        {"format", "cordgrasp-plan"},
+        {"format_version", 1},
+        {"cordgrasp_version", "test"},
+        {"inputs",
+         {{"hand", {{"name", "parallel_gripper"}, {"path", resolve_hand_path("parallel_gripper")},
+                    {"urdf_path", ""}}},
+          {"object", {{"path", box_path()}, {"name", "box"}, {"units", "m"},
+                      {"triangles", 420}}}}},
+        {"parameters", {{"planner", "generic"}, {"seed", kPlanSeed}, {"mu", 0.5}}},
+        {"stats", nlohmann::json::object()},
+        {"grasps", nlohmann::json::array()}};
+    for (int k = 0; k < grasps; ++k) plan["grasps"].push_back(grasp);
+    std::ofstream(path) << plan.dump(1);
+  }
+
+  nlohmann::json read_out() const {
+    std::ifstream in(out_path());
+    return nlohmann::json::parse(in);
+  }
+
+  std::filesystem::path dir_;
+};
+
+TEST_F(ValidateCli, WritesSimJsonAndOneLinePerGraspAndATotal) {
+  const auto r = run_cordgrasp("validate --plan " + plan_path() + " --tests lift,shake --out " +
+                               out_path());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("grasp 0: held"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("grasp 1: held"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("held 2 / 2"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("validate: 2/2 grasps"), std::string::npos) << r.output;  // stderr
+  const nlohmann::json sim = read_out();
+  EXPECT_EQ(sim["format"], "cordgrasp-sim");
+  EXPECT_EQ(sim["format_version"], 1);
+  EXPECT_EQ(sim["summary"]["grasps"], 2);
+  EXPECT_EQ(sim["summary"]["held"], 2);
+  EXPECT_EQ(sim["inputs"]["plan_seed"], kPlanSeed);
+  EXPECT_EQ(sim["inputs"]["hand"]["name"], "parallel_gripper");
+  EXPECT_EQ(sim["parameters"]["tests"], "lift,shake");
+  EXPECT_EQ(sim["parameters"]["mu"], 0.5);
+  EXPECT_TRUE(sim["backend"].get<std::string>().find("Bullet") != std::string::npos);
+  ASSERT_EQ(sim["grasps"].size(), 2u);
+  const auto& g = sim["grasps"][0];
+  EXPECT_EQ(g["outcome"], "held");
+  EXPECT_TRUE(g["failed_phase"].is_null());
+  std::vector<std::string> phases;
+  for (const auto& p : g["phases"]) phases.push_back(p["name"]);
+  EXPECT_EQ(phases, (std::vector<std::string>{"settle", "close", "lift", "shake"}));
+  const auto& lift = g["phases"][2];
+  EXPECT_TRUE(lift["joint_efforts"].contains("left_finger_joint"));
+  EXPECT_GT(lift["contact_count"].get<int>(), 0);
+  EXPECT_GT(lift["sim_time_s"].get<double>(), 1.9);
+  EXPECT_GT(sim["object"]["mass_kg"].get<double>(), 0.0);
+}
+
+TEST_F(ValidateCli, MuOverrideOfZeroDropsEveryGrasp) {
+  const auto r = run_cordgrasp("validate --plan " + plan_path() +
+                               " --tests lift --mu 0 --grasps 1 -q --out " + out_path());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("held 0 / 1"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("validate: "), std::string::npos) << r.output;  // --quiet
+  const nlohmann::json sim = read_out();
+  EXPECT_EQ(sim["parameters"]["mu"], 0.0);
+  EXPECT_EQ(sim["grasps"][0]["outcome"], "dropped");
+}
+
+TEST_F(ValidateCli, PlanForAnotherHandIsAnError) {
+  const auto r = run_cordgrasp("validate --plan " + plan_path() +
+                               " --hand cordgrasp_sah --out " + out_path());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("made for hand 'parallel_gripper'"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out_path()));
+}
+
+TEST_F(ValidateCli, PlanForAnotherObjectIsAnError) {
+  const auto r = run_cordgrasp("validate --plan " + plan_path() + " --object " + source_dir() +
+                               "/assets/objects/mug.obj --out " + out_path());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("was planned for object"), std::string::npos) << r.output;
+}
+
+TEST_F(ValidateCli, SameObjectGivenExplicitlyIsAccepted) {
+  const auto r = run_cordgrasp("validate --plan " + plan_path() + " --object " + box_path() +
+                               " --hand parallel_gripper --tests lift --grasps 1 -q --out " +
+                               out_path());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(read_out()["summary"]["grasps"], 1);
+}
+
+TEST_F(ValidateCli, UnknownTestOrMissingPlanIsAnError) {
+  auto r = run_cordgrasp("validate --plan " + plan_path() + " --tests lift,wobble --out " +
+                         out_path());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("wobble"), std::string::npos) << r.output;
+  r = run_cordgrasp("validate --plan " + (dir_ / "missing.json").string() + " --out " +
+                    out_path());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("missing.json"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace cordgrasp

@@ -1,0 +1,128 @@
+// `cordgrasp validate`: physics validation (Bullet) of the grasps in a plan.json (issue 5).
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "commands.h"
+#include "cordgrasp/core/error.h"
+#include "cordgrasp/core/hand_io.h"
+#include "cordgrasp/core/mesh_io.h"
+#include "cordgrasp/sim/convex_decomposition.h"
+#include "plan_json.h"
+#include "sim_json.h"
+
+namespace cordgrasp::cli {
+namespace {
+
+struct ValidateOptions {
+  std::string plan;
+  std::string hand;
+  std::string object;
+  std::string units;
+  std::string tests = "lift,shake,gravity6";
+  std::optional<double> mu;
+  std::optional<double> mass_kg;
+  std::optional<double> density_kgm3;
+  std::string object_shape = "auto";
+  std::string cache_dir;
+  int grasps = -1;
+  std::string out;
+  bool quiet = false;
+};
+
+std::string canonical(const std::string& path) {
+  std::error_code ec;
+  const auto p = std::filesystem::weakly_canonical(path, ec);
+  return ec ? path : p.string();
+}
+
+void run_validate(const ValidateOptions& opt) {
+  const nlohmann::json plan_json = read_plan_json(opt.plan);
+  // Hand: the plan's, or the one given (which must be the plan's).
+  const std::string hand_path = opt.hand.empty() ? plan_hand_path(plan_json) : opt.hand;
+  const HandModel hand = load_hand(hand_path);
+  const PlanDocument plan = plan_from_json(plan_json, hand);  // throws for another hand
+
+  // Object: the plan's, or the one given (which must be the plan's geometry).
+  MeshLoadOptions mesh_opt;
+  mesh_opt.units = parse_length_units(opt.units.empty() ? plan.object_units : opt.units);
+  Mesh mesh;
+  if (opt.object.empty()) {
+    mesh = load_mesh(plan.object_path, mesh_opt);
+  } else {
+    mesh = load_mesh(opt.object, mesh_opt);
+    if (canonical(opt.object) != canonical(plan.object_path)) {
+      bool same = false;
+      if (std::filesystem::exists(plan.object_path))
+        same = mesh_hash(load_mesh(plan.object_path, mesh_opt)) == mesh_hash(mesh);
+      else
+        same = plan.object_triangles == static_cast<int>(mesh.triangles.size());
+      if (!same)
+        throw InputError("validate: '" + opt.plan + "' was planned for object '" +
+                         plan.object_path + "', not '" + opt.object + "'");
+    }
+  }
+
+  SimParams params;
+  // μ: one value shared with the planner: the plan's unless --mu overrides it.
+  params.contact.mu = plan.parameters.value("mu", kDefaultFrictionCoefficient);
+  params.contact.soft_finger_radius_m = plan.parameters.value("soft_finger_radius_m", 0.0);
+  if (opt.mu) params.contact.mu = *opt.mu;
+  if (opt.mass_kg) params.mass_kg = *opt.mass_kg;
+  if (opt.density_kgm3) params.density_kgm3 = *opt.density_kgm3;
+  params.object_shape = object_shape_from_string(opt.object_shape);
+  params.decomposition_cache_dir = opt.cache_dir;
+  const SimTests tests = sim_tests_from_string(opt.tests);
+
+  const bool progress = !opt.quiet;
+  SimDocument doc = validate_plan(
+      plan, hand, mesh, params, tests, opt.grasps,
+      [&](int done, int total, const SimResult& r) {
+        std::cout << "grasp " << done - 1 << ": " << sim_result_line(r) << '\n' << std::flush;
+        if (progress) std::fprintf(stderr, "validate: %d/%d grasps\n", done, total);
+      });
+  doc.plan_path = canonical(opt.plan);
+  doc.object_path = opt.object.empty() ? plan.object_path : canonical(opt.object);
+  write_sim_file(opt.out, doc, hand);
+  int held = 0;
+  for (const SimResult& r : doc.results) held += r.held();
+  std::printf("held %d / %d (tests %s, mu %.3g) -> %s\n", held,
+              static_cast<int>(doc.results.size()), opt.tests.c_str(), params.contact.mu,
+              opt.out.c_str());
+}
+
+}  // namespace
+
+void add_validate_command(CLI::App& app);
+CORDGRASP_REGISTER_COMMAND(40, add_validate_command);
+
+void add_validate_command(CLI::App& app) {
+  auto opt = std::make_shared<ValidateOptions>();
+  CLI::App* cmd =
+      app.add_subcommand("validate", "Check planned grasps in Bullet physics (lift, shake, "
+                                     "gravity in six directions)");
+  cmd->add_option("--plan", opt->plan, "plan.json written by `cordgrasp plan`")->required();
+  cmd->add_option("--hand", opt->hand,
+                  "Hand (default: the plan's); a plan for another hand is an error");
+  cmd->add_option("--object,-o", opt->object,
+                  "Object mesh (default: the plan's); another object is an error");
+  cmd->add_option("--units", opt->units, "Units of --object: m, mm or auto (default: the plan's)")
+      ->check(CLI::IsMember({"m", "mm", "auto"}));
+  cmd->add_option("--tests", opt->tests, "Tests to run after closing: lift,shake,gravity6")
+      ->capture_default_str();
+  cmd->add_option("--mu", opt->mu, "Friction coefficient (default: the plan's μ)");
+  cmd->add_option("--mass", opt->mass_kg, "Object mass [kg] (default: density × volume)");
+  cmd->add_option("--density", opt->density_kgm3, "Object density [kg/m^3] (default 500)");
+  cmd->add_option("--object-shape", opt->object_shape,
+                  "Object collision shape: auto, hull, decomposition, gimpact")
+      ->check(CLI::IsMember({"auto", "hull", "decomposition", "gimpact"}))
+      ->capture_default_str();
+  cmd->add_option("--cache-dir", opt->cache_dir,
+                  "Directory caching convex decompositions on disk (by mesh hash)");
+  cmd->add_option("--grasps", opt->grasps, "Validate only the first K grasps of the plan");
+  cmd->add_option("--out", opt->out, "Output sim.json")->required();
+  cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
+  cmd->callback([opt]() { run_validate(*opt); });
+}
+
+}  // namespace cordgrasp::cli

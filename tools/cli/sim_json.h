@@ -1,0 +1,77 @@
+#pragma once
+// sim.json: what `cordgrasp validate` writes (and `run` will embed), and the in-process
+// validation of a whole plan that produces it.
+//
+// Layout (format_version 1), meters, radians, seconds, kilograms:
+//   format: "cordgrasp-sim", format_version: 1, cordgrasp_version, backend (Bullet version)
+//   inputs: {plan, hand: {name, path}, object: {path, name, units, triangles}, plan_seed}
+//   parameters: {tests, mu, soft_finger_radius_m, time_step_s, solver_iterations, erp, ... every
+//                SimParams field (sim_params_to_json)}
+//   object: {shape, parts, mass_kg, volume_m3, closed, com_m, principal_inertia_kgm2,
+//            decomposition_s}
+//   grasps: [{index (in the plan), outcome, failed_phase (null when held), detail, epsilon,
+//             force_closure, wall_time_s,
+//             phases: [{name, outcome, detail, translation_m, rotation_rad, max_translation_m,
+//                       in_contact, contact_count, max_contact_count, max_penetration_m,
+//                       joint_efforts: {joint: N·m or N}, sim_time_s, wall_time_s, steps}]}]
+//   summary: {grasps, held, outcomes: {held, slipped, dropped, unstable}, wall_time_s}
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cordgrasp/core/hand_model.h"
+#include "cordgrasp/core/mesh.h"
+#include "cordgrasp/sim/validate_grasp.h"
+#include "plan_json.h"
+
+namespace cordgrasp::cli {
+
+/// Result of validating (some of) the grasps of a plan.
+struct SimDocument {
+  std::string plan_path;
+  std::string hand_name;
+  std::string hand_path;
+  std::string object_path;
+  std::string object_name;
+  std::string object_units = "m";
+  int object_triangles = 0;
+  std::optional<std::uint64_t> plan_seed;  ///< the plan's seed (the simulation draws none)
+  SimParams params;
+  SimTests tests;
+  std::vector<int> grasp_indices;  ///< index of each result's grasp in the plan
+  std::vector<SimResult> results;
+  std::vector<Grasp> grasps;       ///< the validated grasps (for ε, force closure)
+  double wall_time_s = 0.0;
+};
+
+/// Every SimParams field as JSON (units in the names).
+nlohmann::json sim_params_to_json(const SimParams& params);
+
+/// One SimResult as JSON (joint names from `hand`).
+nlohmann::json sim_result_to_json(const SimResult& result, const HandModel& hand);
+
+/// JSON of a validation (layout above).
+nlohmann::json sim_to_json(const SimDocument& doc, const HandModel& hand);
+
+/// Writes sim_to_json() atomically. @throws InputError.
+void write_sim_file(const std::string& path, const SimDocument& doc, const HandModel& hand);
+
+/// Parses sim.json. @throws InputError naming the file (missing, not JSON, not a sim file).
+nlohmann::json read_sim_json(const std::string& path);
+
+/// Called after each grasp: (done, total, result).
+using ValidateProgress = std::function<void(int, int, const SimResult&)>;
+
+/// Validates the first `max_grasps` grasps of `plan` (all when < 0) on `mesh` with `hand`.
+SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const Mesh& mesh,
+                          const SimParams& params, const SimTests& tests, int max_grasps = -1,
+                          const ValidateProgress& progress = {});
+
+/// "held (lift held, shake held, gravity6 held) mass 0.12 kg, 0.41 s"
+std::string sim_result_line(const SimResult& result);
+
+}  // namespace cordgrasp::cli
