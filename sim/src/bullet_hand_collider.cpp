@@ -337,6 +337,7 @@ class BulletHandCollider final : public HandObjectCollider {
     object_cert_.assign(links_.size(), Certificate{});
     pair_cert_.assign(links_.size() * links_.size(), Certificate{});
     pair_axis_.assign(links_.size() * links_.size(), btVector3(0, 0, 0));
+    pair_rel_.assign(links_.size() * links_.size(), RelativeCertificate{});
     child_aabb_.resize(links_.size());
     link_aabb_.resize(links_.size());
     for (size_t i = 0; i < links_.size(); ++i) update_aabbs(static_cast<int>(i));
@@ -379,7 +380,7 @@ class BulletHandCollider final : public HandObjectCollider {
       }
       clearance = std::min(clearance, q.best().m_distance);
     }
-    cert = Certificate{clearance, motion_[link]};
+    if (clearance > kMinClearance_m) cert = Certificate{clearance, motion_[link]};
     return false;
   }
 
@@ -390,6 +391,11 @@ class BulletHandCollider final : public HandObjectCollider {
     Certificate& cert = pair_cert_[pair_index(a, b)];
     const double motion = motion_[a] + motion_[b];
     if (cert.holds(motion)) return false;
+    // Fingers closing side by side move together: bound b's motion relative to a as well.
+    const btTransform X_ab = X_OL_[a].inverse() * X_OL_[b];
+    RelativeCertificate& rel = pair_rel_[pair_index(a, b)];
+    if (rel.clearance > 0.0 && displacement_bound(b, rel.X_ab, X_ab) < rel.clearance)
+      return false;
     double clearance = std::numeric_limits<double>::infinity();
     for (size_t i = 0; i < sa.children.size(); ++i) {
       for (size_t j = 0; j < sb.children.size(); ++j) {
@@ -409,12 +415,16 @@ class BulletHandCollider final : public HandObjectCollider {
         if (!result.m_hasResult) continue;
         if (result.m_distance < 0.0) {
           cert = Certificate{};
+          rel = RelativeCertificate{};
           return true;
         }
         clearance = std::min(clearance, result.m_distance);
       }
     }
-    if (std::isfinite(clearance)) cert = Certificate{clearance, motion};
+    if (std::isfinite(clearance) && clearance > kMinClearance_m) {
+      cert = Certificate{clearance, motion};
+      rel = RelativeCertificate{clearance, X_ab};
+    }
     return false;
   }
 
@@ -475,8 +485,19 @@ class BulletHandCollider final : public HandObjectCollider {
   struct Certificate {
     double clearance = -1.0;  // < 0: none
     double motion = 0.0;
-    bool holds(double motion_now) const { return motion_now - motion < clearance; }
+    bool holds(double motion_now) const {
+      return clearance > 0.0 && motion_now - motion < clearance;
+    }
   };
+
+  // Clearance between two links certified at relative pose X_ab (b in a's frame).
+  struct RelativeCertificate {
+    double clearance = -1.0;  // < 0: none
+    btTransform X_ab = btTransform::getIdentity();
+  };
+
+  // Touching pairs are not certified: their verdict is at the mercy of rounding [m].
+  static constexpr double kMinClearance_m = 1e-9;
 
   // Certify link–object clearance up to this distance in boolean queries [m].
   static constexpr double kCertifyDistance_m = 5e-3;
@@ -537,6 +558,7 @@ class BulletHandCollider final : public HandObjectCollider {
   std::vector<Certificate> object_cert_;    // per link
   std::vector<Certificate> pair_cert_;      // per ordered link pair (a·n + b)
   std::vector<btVector3> pair_axis_;        // last GJK separating axis per pair
+  std::vector<RelativeCertificate> pair_rel_;  // per ordered link pair
   std::vector<std::vector<Aabb3>> child_aabb_;
   std::vector<Aabb3> link_aabb_;
 };
