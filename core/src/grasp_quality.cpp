@@ -1,17 +1,17 @@
 #include "cordgrasp/core/grasp_quality.h"
 
+#include <libqhullcpp/Qhull.h>
+#include <libqhullcpp/QhullError.h>
+
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numeric>
 #include <optional>
 #include <random>
-#include <stdexcept>
-
-#include <Eigen/SVD>
-#include <libqhullcpp/Qhull.h>
-#include <libqhullcpp/QhullError.h>
 #include <sstream>
+#include <stdexcept>
 
 #include "cordgrasp/core/mesh_properties.h"
 
@@ -81,7 +81,8 @@ std::optional<double> simplex_min(const Eigen::MatrixXd& A, const Eigen::VectorX
         if (T(i, enter) <= kTol) continue;
         const double ratio = T(i, n + m) / T(i, enter);
         if (leave < 0 || ratio < best - kTol ||
-            (ratio <= best + kTol && basis[static_cast<size_t>(i)] < basis[static_cast<size_t>(leave)])) {
+            (ratio <= best + kTol &&
+             basis[static_cast<size_t>(i)] < basis[static_cast<size_t>(leave)])) {
           leave = i;
           best = ratio;
         }
@@ -265,17 +266,16 @@ WrenchSpaceObject prepare_wrench_space(const Mesh& mesh, const QualityParams& pa
 }
 
 GraspQuality evaluate_grasp_quality(const std::vector<Contact>& contacts,
-                                    const WrenchSpaceObject& object,
-                                    const QualityParams& params) {
+                                    const WrenchSpaceObject& object, const QualityParams& params) {
   GraspQuality out;
   if (contacts.size() < 2) return out;
   const double mu = mu_for(params);
   std::vector<Wrench> w;
   w.reserve(contacts.size() * static_cast<size_t>(params.contact.cone_edges));
   for (const Contact& c : contacts) {
-    const auto cw = contact_wrenches(c.p_O, c.n_O, mu, params.contact.cone_edges,
-                                     object.center_O, object.torque_scale_per_m,
-                                     params.contact.soft_finger_radius_m);
+    const auto cw =
+        contact_wrenches(c.p_O, c.n_O, mu, params.contact.cone_edges, object.center_O,
+                         object.torque_scale_per_m, params.contact.soft_finger_radius_m);
     w.insert(w.end(), cw.begin(), cw.end());
   }
   // Most finger-stage results are not force closure: a small LP rules those out before the

@@ -35,9 +35,8 @@ PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand
 
   std::vector<size_t> order(regions.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return regions[a].chi_m2 < regions[b].chi_m2;
-  });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return regions[a].chi_m2 < regions[b].chi_m2; });
   const int wanted = std::max(1, params.grasps);
   for (size_t rank = 0; rank < order.size(); ++rank) {
     if (static_cast<int>(result.grasps.size()) >= wanted) break;

@@ -58,7 +58,8 @@ PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
       u = 1.0 - u;
       v = 1.0 - v;
     }
-    const Eigen::Vector3d p = mesh.vertices[t[0]] + u * (mesh.vertices[t[1]] - mesh.vertices[t[0]]) +
+    const Eigen::Vector3d p = mesh.vertices[t[0]] +
+                              u * (mesh.vertices[t[1]] - mesh.vertices[t[0]]) +
                               v * (mesh.vertices[t[2]] - mesh.vertices[t[0]]);
     const Eigen::Vector3d z = -outward_face_normal(mesh, tri, p);
     const double roll = 2.0 * M_PI * unit(rng);

@@ -38,7 +38,7 @@ std::unique_ptr<btConvexShape> make_geometry_shape(const Geometry& geometry,
 struct LinkShape {
   std::unique_ptr<btCompoundShape> compound;  ///< nullptr when the link has no collision geometry
   std::vector<std::unique_ptr<btConvexShape>> children;  ///< child i of `compound`
-  std::vector<Eigen::Isometry3d> X_LC;                    ///< child frames in the link frame
+  std::vector<Eigen::Isometry3d> X_LC;                   ///< child frames in the link frame
 };
 
 /// Builds the LinkShape of `link` (compound is nullptr when it has no usable geometry).

@@ -1,4 +1,6 @@
 // plan.json round trip (tools/cli/plan_json.h).
+#include "plan_json.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -6,7 +8,6 @@
 
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
-#include "plan_json.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
