@@ -26,8 +26,9 @@ namespace {
 constexpr int kDim = 6;
 // Relative singular-value threshold below which the wrench set is taken as lower-dimensional.
 constexpr double kRankTolerance = 1e-9;
-// LP weight margin at or below which the origin is taken as not strictly inside the hull.
-constexpr double kLpInteriorTolerance = 1e-12;
+// LP weight margin at or below which the origin is taken as outside the hull (pre-check only:
+// the hull decides the rest; far below the margins of grasps with ε > min_epsilon).
+constexpr double kLpInteriorTolerance = 1e-11;
 
 // Unit tangent pair (t1, t2) ⊥ n, deterministic: t1 is the coordinate axis least aligned with n,
 // projected onto the tangent plane; t2 = n × t1.
@@ -291,7 +292,7 @@ GraspQuality evaluate_grasp_quality(const std::vector<Contact>& contacts,
     if (out.force_closure && object.ows_min_offset > 0.0)
       out.epsilon = out.hull.min_centroid_distance / object.ows_min_offset;
   } else {
-    out.force_closure = out.hull.max_offset < 0.0;
+    out.force_closure = out.hull.min_origin_distance > params.min_epsilon;
     if (out.force_closure) out.epsilon = out.hull.min_origin_distance;
   }
   return out;

@@ -12,7 +12,8 @@ namespace cordgrasp {
 
 /// How force closure and ε are computed (spec §8).
 enum class QualityMode {
-  kTextbook,  ///< real μ; FC iff the origin is strictly inside the hull; ε = origin→hull distance
+  kTextbook,  ///< real μ; FC iff the origin is inside the hull by more than min_epsilon;
+              ///< ε = origin→hull distance
   kSimox,     ///< Simox compat: μ_eff = 1 (45° cones), FC tolerance 1e-4, ε = GWS/OWS ratio of
               ///< facet distances from the hull's vertex centroid
 };
@@ -26,6 +27,10 @@ QualityMode quality_mode_from_string(const std::string& text);
 /// Parameters of the grasp wrench space (spec §8).
 struct QualityParams {
   ContactModel contact;  ///< μ (textbook mode) and cone edges
+  /// Textbook mode: force closure needs ε above this. Grasps whose contacts leave the origin on
+  /// the hull's boundary (e.g. two collinear opposed contacts plus one) come out of the joggled
+  /// hull with ε ~ 1e-11; they are not force closure.
+  double min_epsilon = 1e-8;
   QualityMode mode = QualityMode::kTextbook;
   double simox_mu_eff = 1.0;         ///< cone slope Simox really uses (45° half-angle)
   double simox_fc_tolerance = 1e-4;  ///< Simox accepts max facet offset ≤ this as FC
