@@ -1,0 +1,227 @@
+#include "cordgrasp/core/front_cord.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cordgrasp/core/plane_cross_section.h"
+#include "cordgrasp/core/tighten_cord.h"
+#include "convex_hull_2d.h"
+#include "plane_geometry_2d.h"
+
+namespace cordgrasp {
+namespace {
+
+using detail::cross2;
+
+/// Reused buffers (one set per thread) so the hot path does not allocate.
+struct Workspace {
+  std::vector<Segment2> segments;
+  std::vector<Segment2> local_segments;
+  std::vector<Eigen::Vector2d> candidates;
+  std::vector<double> hits;
+  std::vector<Eigen::Vector2d> hull_input;
+  std::vector<Eigen::Vector2d> hull;
+};
+
+/// Front cord as the counter-clockwise hull chain from P_r to P_l (CordConstruction::kHullChain):
+/// only candidates strictly on P1's side of line P_r P_l can be on it. Empty when P_r or P_l is
+/// not a vertex of that strict hull (near-degenerate input: the caller falls back to TIGHTEN).
+void hull_chain(Workspace& ws, const Eigen::Vector2d& q1, const Eigen::Vector2d& p_r,
+                const Eigen::Vector2d& p_l, std::vector<Eigen::Vector2d>& chain) {
+  chain.clear();
+  const Eigen::Vector2d dir = p_l - p_r;
+  const double side = cross2(dir, q1 - p_r);
+  ws.hull_input.clear();
+  for (const Eigen::Vector2d& v : ws.candidates)
+    if (cross2(dir, v - p_r) * side > 0.0) ws.hull_input.push_back(v);
+  ws.hull_input.push_back(p_r);
+  ws.hull_input.push_back(p_l);
+  detail::convex_hull_ccw(ws.hull_input, ws.hull);
+  const auto& h = ws.hull;
+  const size_t m = h.size();
+  const size_t ir = size_t(std::find(h.begin(), h.end(), p_r) - h.begin());
+  const size_t il = size_t(std::find(h.begin(), h.end(), p_l) - h.begin());
+  if (ir == m || il == m) return;
+  for (size_t k = ir;; k = (k + 1) % m) {
+    chain.push_back(h[k]);
+    if (k == il) break;
+  }
+}
+
+/// P_l and P_r of Case I: the first points swept from P1 as the target moves P2→P3 and P3→P2
+/// (ties: nearer), exactly TIGHTEN's first event (first_swept_point) for candidates already in
+/// the closed triangle; one pass for both.
+std::pair<int, int> tangent_points(const Eigen::Vector2d& q1,
+                                   const std::vector<Eigen::Vector2d>& pts, double eps_len) {
+  int il = -1, ir = -1;
+  Eigen::Vector2d dl(0.0, 0.0), dr(0.0, 0.0);
+  double dl2 = 0.0, dr2 = 0.0;
+  const double eps2 = eps_len * eps_len;
+  for (int k = 0; k < int(pts.size()); ++k) {
+    const Eigen::Vector2d d = pts[k] - q1;
+    const double d2 = d.squaredNorm();
+    if (d2 <= eps2) continue;
+    if (il < 0) {
+      il = ir = k;
+      dl = dr = d;
+      dl2 = dr2 = d2;
+      continue;
+    }
+    const double cl = cross2(d, dl);  // > 0: swept before the current P_l (sense +1)
+    if (cl > 0.0 || (cl == 0.0 && d2 < dl2)) {
+      il = k;
+      dl = d;
+      dl2 = d2;
+    }
+    const double cr = -cross2(d, dr);  // sense −1
+    if (cr > 0.0 || (cr == 0.0 && d2 < dr2)) {
+      ir = k;
+      dr = d;
+      dr2 = d2;
+    }
+  }
+  return {il, ir};
+}
+
+/// Does closed segment [a, b] meet segment s at parameter t ∈ [0, 1] along a→b?
+/// Appends every such t (both overlap ends for a collinear overlap) to `ts`.
+void segment_hits(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Segment2& s,
+                  std::vector<double>& ts) {
+  const Eigen::Vector2d r = b - a, sv = s.b - s.a, qa = s.a - a;
+  const double denom = cross2(r, sv);
+  if (denom != 0.0) {
+    const double t = cross2(qa, sv) / denom, u = cross2(qa, r) / denom;
+    if (u >= 0.0 && u <= 1.0 && t >= 0.0 && t <= 1.0) ts.push_back(t);
+    return;
+  }
+  if (cross2(qa, r) != 0.0) return;
+  const double len2 = r.squaredNorm();
+  const double ta = qa.dot(r) / len2, tb = (s.b - a).dot(r) / len2;
+  const double lo = std::max(std::min(ta, tb), 0.0), hi = std::min(std::max(ta, tb), 1.0);
+  if (lo <= hi) {
+    ts.push_back(lo);
+    ts.push_back(hi);
+  }
+}
+
+/// Open-segment test of spec §2.4 for one cross-section segment (see open_segment_blocked).
+bool blocks(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double len, const Segment2& s,
+            double eps) {
+  const Eigen::Vector2d r = b - a, sv = s.b - s.a, qa = s.a - a;
+  const double t_lo = eps / len, t_hi = 1.0 - eps / len;
+  const double denom = cross2(r, sv);
+  if (denom != 0.0) {
+    const double t = cross2(qa, sv) / denom, u = cross2(qa, r) / denom;
+    return u >= 0.0 && u <= 1.0 && t > t_lo && t < t_hi;
+  }
+  if (cross2(qa, r) != 0.0) return false;
+  const double len2 = len * len;
+  const double ta = qa.dot(r) / len2, tb = (s.b - a).dot(r) / len2;
+  return std::max(std::min(ta, tb), t_lo) < std::min(std::max(ta, tb), t_hi);
+}
+
+/// Closed-triangle membership (barycentric ≥ −tol) of v in CCW triangle (q1, q2, q3).
+struct TriangleTest {
+  Eigen::Vector2d q1, q2, q3;
+  double inv_area2, tol;
+  bool contains(const Eigen::Vector2d& v) const {
+    return cross2(q2 - v, q3 - v) * inv_area2 >= -tol &&
+           cross2(q3 - v, q1 - v) * inv_area2 >= -tol &&
+           cross2(q1 - v, q2 - v) * inv_area2 >= -tol;
+  }
+};
+
+std::optional<FrontCord> fail(FrontCordFailure why, FrontCordFailure* out) {
+  if (out) *out = why;
+  return std::nullopt;
+}
+
+}  // namespace
+
+Polyline3 FrontCord::cord_3d() const {
+  Polyline3 out;
+  out.reserve(cord.size());
+  for (const Eigen::Vector2d& q : cord) out.push_back(frame.to_3d(q));
+  return out;
+}
+
+std::optional<FrontCord> front_cord(const CordObject& object, const Eigen::Vector3d& p1,
+                                    const Eigen::Vector3d& p2, const Eigen::Vector3d& p3,
+                                    const CordParams& params, FrontCordFailure* failure) {
+  thread_local Workspace ws;
+  if (failure) *failure = FrontCordFailure::kNone;
+  FrontCord fc;
+  fc.frame = guide_frame(p1, p2, p3);
+  const Eigen::Vector2d q1(0.0, 0.0), q2 = fc.frame.to_2d(p2), q3 = fc.frame.to_2d(p3);
+  const double eps = params.eps_len_m;
+  const double len12 = (q2 - q1).norm(), len13 = (q3 - q1).norm();
+
+  ws.segments.clear();
+  const Eigen::Vector2d region[3] = {q1, q2, q3};
+  append_plane_cross_section_segments(object.bvh, fc.frame, ws.segments, region);
+
+  // One pass over S: guide-edge freedom, P2P3 hits, candidates inside the closed triangle.
+  const TriangleTest tri{q1, q2, q3, 1.0 / cross2(q2 - q1, q3 - q1), params.barycentric_tol};
+  const Eigen::Vector2d box_lo = q1.cwiseMin(q2).cwiseMin(q3);
+  const Eigen::Vector2d box_hi = q1.cwiseMax(q2).cwiseMax(q3);
+  ws.local_segments.clear();
+  ws.candidates.clear();
+  ws.hits.clear();
+  for (const Segment2& s : ws.segments) {
+    const Eigen::Vector2d lo = s.a.cwiseMin(s.b), hi = s.a.cwiseMax(s.b);
+    if ((lo.array() > box_hi.array()).any() || (hi.array() < box_lo.array()).any()) continue;
+    if (blocks(q1, q2, len12, s, eps) || blocks(q1, q3, len13, s, eps))
+      return fail(FrontCordFailure::kGuideBlocked, failure);
+    const size_t nhits = ws.hits.size();
+    segment_hits(q2, q3, s, ws.hits);
+    const bool in_a = tri.contains(s.a), in_b = tri.contains(s.b);
+    if (in_a) ws.candidates.push_back(s.a);
+    if (in_b) ws.candidates.push_back(s.b);
+    if (in_a || in_b || ws.hits.size() > nhits) ws.local_segments.push_back(s);
+  }
+
+  TightenOptions topt;
+  topt.eps_len_m = eps;
+  topt.eps_area_m2 = params.eps_area_rel * object.radius_m * object.radius_m;
+  topt.barycentric_tol = params.barycentric_tol;
+  topt.dedup_m = params.dedup_m;
+
+  const bool use_hull = params.cord_construction == CordConstruction::kHullChain;
+  Eigen::Vector2d p_l, p_r;
+  if (ws.hits.empty()) {
+    fc.cord_case = CordCase::kI;
+    if (ws.candidates.empty()) return fail(FrontCordFailure::kNoContact, failure);
+    if (use_hull) {
+      // TIGHTEN on P1→P2→P3→P1: its first event is P_l, its last contact P_r (the first event
+      // of the mirrored sweep from P1, P3 towards P2).
+      const auto [il, ir] = tangent_points(q1, ws.candidates, eps);
+      p_l = ws.candidates[il];
+      p_r = ws.candidates[ir];
+    } else {
+      const auto back = tighten_cord({q1, q2, q3, q1}, ws.candidates, ws.local_segments, topt);
+      if (!back) return fail(FrontCordFailure::kTightenFailed, failure);
+      if (back->size() < 3) return fail(FrontCordFailure::kNoContact, failure);
+      p_l = (*back)[1];
+      p_r = (*back)[back->size() - 2];
+    }
+  } else {
+    fc.cord_case = CordCase::kII;
+    const auto [tmin, tmax] = std::minmax_element(ws.hits.begin(), ws.hits.end());
+    p_l = q2 + *tmin * (q3 - q2);
+    p_r = q2 + *tmax * (q3 - q2);
+  }
+  if ((p_l - p_r).norm() < params.min_grasp_gap_m)
+    return fail(FrontCordFailure::kGraspPointsTooClose, failure);
+
+  if (use_hull) hull_chain(ws, q1, p_r, p_l, fc.cord);
+  if (fc.cord.empty()) {
+    auto front = tighten_cord({p_r, q3, q1, q2, p_l}, ws.candidates, ws.local_segments, topt);
+    if (!front) return fail(FrontCordFailure::kTightenFailed, failure);
+    fc.cord = std::move(*front);
+  }
+  if (fc.cord_case == CordCase::kII && fc.cord.size() < 3)
+    return fail(FrontCordFailure::kTooFewSegments, failure);
+  return fc;
+}
+
+}  // namespace cordgrasp
