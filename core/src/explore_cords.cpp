@@ -3,6 +3,8 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
+#include <map>
+#include <mutex>
 #include <numeric>
 #include <random>
 #include <stdexcept>
@@ -17,6 +19,16 @@ namespace cordgrasp {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+/// Unit sphere points, computed once per (count, kind) and process (they are deterministic).
+const std::vector<Eigen::Vector3d>& cached_sphere_points(int count, SphereSequence kind) {
+  static std::mutex mutex;
+  static std::map<std::pair<int, int>, std::vector<Eigen::Vector3d>> cache;
+  const std::lock_guard<std::mutex> lock(mutex);
+  std::vector<Eigen::Vector3d>& points = cache[{count, int(kind)}];
+  if (int(points.size()) != count) points = sphere_points(count, kind);
+  return points;
+}
 
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
@@ -44,7 +56,7 @@ std::vector<GraspRegion> explore_cords(const Mesh& mesh, double palm_width_m,
   const double r2 = object.radius_m + params.r2_margin_m;
   const double r1 = r2 + params.delta_r_m;
   const int count = std::max(0, params.sphere_points);
-  const std::vector<Eigen::Vector3d> unit = sphere_points(count, params.sphere_sequence);
+  const std::vector<Eigen::Vector3d>& unit = cached_sphere_points(count, params.sphere_sequence);
   std::mt19937_64 rng(params.seed);
   std::vector<int> perm1(count), perm2(count), perm3(count);
   std::iota(perm1.begin(), perm1.end(), 0);

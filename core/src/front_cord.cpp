@@ -13,9 +13,12 @@ namespace {
 
 using detail::cross2;
 
+/// Segments whose endpoints are farther than this (barycentric units) on one side of a guide
+/// edge line skip the exact intersection test: far above rounding, so nothing is missed.
+constexpr double kSideMargin = 1e-9;
+
 /// Reused buffers (one set per thread) so the hot path does not allocate.
 struct Workspace {
-  std::vector<Segment2> segments;
   std::vector<Segment2> local_segments;
   std::vector<Eigen::Vector2d> candidates;
   std::vector<double> hits;
@@ -120,17 +123,6 @@ bool blocks(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double len, cons
   return std::max(std::min(ta, tb), t_lo) < std::min(std::max(ta, tb), t_hi);
 }
 
-/// Closed-triangle membership (barycentric ≥ −tol) of v in CCW triangle (q1, q2, q3).
-struct TriangleTest {
-  Eigen::Vector2d q1, q2, q3;
-  double inv_area2, tol;
-  bool contains(const Eigen::Vector2d& v) const {
-    return cross2(q2 - v, q3 - v) * inv_area2 >= -tol &&
-           cross2(q3 - v, q1 - v) * inv_area2 >= -tol &&
-           cross2(q1 - v, q2 - v) * inv_area2 >= -tol;
-  }
-};
-
 std::optional<FrontCord> fail(FrontCordFailure why, FrontCordFailure* out) {
   if (out) *out = why;
   return std::nullopt;
@@ -148,33 +140,58 @@ Polyline3 FrontCord::cord_3d() const {
 std::optional<FrontCord> front_cord(const CordObject& object, const Eigen::Vector3d& p1,
                                     const Eigen::Vector3d& p2, const Eigen::Vector3d& p3,
                                     const CordParams& params, FrontCordFailure* failure) {
+  thread_local std::vector<Segment2> segments;
+  const PlaneFrame frame = guide_frame(p1, p2, p3);
+  const Eigen::Vector2d region[3] = {Eigen::Vector2d::Zero(), frame.to_2d(p2), frame.to_2d(p3)};
+  segments.clear();
+  append_plane_cross_section_segments(object.bvh, frame, segments, region);
+  return front_cord_from_segments(frame, p2, p3, segments, object.radius_m, params, failure);
+}
+
+std::optional<FrontCord> front_cord_from_segments(const PlaneFrame& frame,
+                                                  const Eigen::Vector3d& p2,
+                                                  const Eigen::Vector3d& p3,
+                                                  const std::vector<Segment2>& segments,
+                                                  double radius_m, const CordParams& params,
+                                                  FrontCordFailure* failure) {
   thread_local Workspace ws;
   if (failure) *failure = FrontCordFailure::kNone;
   FrontCord fc;
-  fc.frame = guide_frame(p1, p2, p3);
+  fc.frame = frame;
   const Eigen::Vector2d q1(0.0, 0.0), q2 = fc.frame.to_2d(p2), q3 = fc.frame.to_2d(p3);
   const double eps = params.eps_len_m;
   const double len12 = (q2 - q1).norm(), len13 = (q3 - q1).norm();
 
-  ws.segments.clear();
-  const Eigen::Vector2d region[3] = {q1, q2, q3};
-  append_plane_cross_section_segments(object.bvh, fc.frame, ws.segments, region);
-
   // One pass over S: guide-edge freedom, P2P3 hits, candidates inside the closed triangle.
-  const TriangleTest tri{q1, q2, q3, 1.0 / cross2(q2 - q1, q3 - q1), params.barycentric_tol};
+  // Barycentric weights (l1, l2, l3) of each endpoint: l3 = 0 on line P1P2, l2 = 0 on P1P3,
+  // l1 = 0 on P2P3; the exact edge tests run only for segments not strictly on one side.
+  const double inv_area = 1.0 / cross2(q2 - q1, q3 - q1);
+  const double tol = params.barycentric_tol;
   const Eigen::Vector2d box_lo = q1.cwiseMin(q2).cwiseMin(q3);
   const Eigen::Vector2d box_hi = q1.cwiseMax(q2).cwiseMax(q3);
+  auto one_side = [](double u, double v) {
+    return (u > kSideMargin && v > kSideMargin) || (u < -kSideMargin && v < -kSideMargin);
+  };
   ws.local_segments.clear();
   ws.candidates.clear();
   ws.hits.clear();
-  for (const Segment2& s : ws.segments) {
-    const Eigen::Vector2d lo = s.a.cwiseMin(s.b), hi = s.a.cwiseMax(s.b);
-    if ((lo.array() > box_hi.array()).any() || (hi.array() < box_lo.array()).any()) continue;
-    if (blocks(q1, q2, len12, s, eps) || blocks(q1, q3, len13, s, eps))
+  for (const Segment2& s : segments) {
+    if (std::max(s.a.x(), s.b.x()) < box_lo.x() || std::min(s.a.x(), s.b.x()) > box_hi.x() ||
+        std::max(s.a.y(), s.b.y()) < box_lo.y() || std::min(s.a.y(), s.b.y()) > box_hi.y())
+      continue;
+    const double a1 = cross2(q2 - s.a, q3 - s.a) * inv_area;
+    const double a2 = cross2(q3 - s.a, q1 - s.a) * inv_area;
+    const double a3 = cross2(q1 - s.a, q2 - s.a) * inv_area;
+    const double b1 = cross2(q2 - s.b, q3 - s.b) * inv_area;
+    const double b2 = cross2(q3 - s.b, q1 - s.b) * inv_area;
+    const double b3 = cross2(q1 - s.b, q2 - s.b) * inv_area;
+    if ((!one_side(a3, b3) && blocks(q1, q2, len12, s, eps)) ||
+        (!one_side(a2, b2) && blocks(q1, q3, len13, s, eps)))
       return fail(FrontCordFailure::kGuideBlocked, failure);
     const size_t nhits = ws.hits.size();
-    segment_hits(q2, q3, s, ws.hits);
-    const bool in_a = tri.contains(s.a), in_b = tri.contains(s.b);
+    if (!one_side(a1, b1)) segment_hits(q2, q3, s, ws.hits);
+    const bool in_a = a1 >= -tol && a2 >= -tol && a3 >= -tol;
+    const bool in_b = b1 >= -tol && b2 >= -tol && b3 >= -tol;
     if (in_a) ws.candidates.push_back(s.a);
     if (in_b) ws.candidates.push_back(s.b);
     if (in_a || in_b || ws.hits.size() > nhits) ws.local_segments.push_back(s);
@@ -182,7 +199,7 @@ std::optional<FrontCord> front_cord(const CordObject& object, const Eigen::Vecto
 
   TightenOptions topt;
   topt.eps_len_m = eps;
-  topt.eps_area_m2 = params.eps_area_rel * object.radius_m * object.radius_m;
+  topt.eps_area_m2 = params.eps_area_rel * radius_m * radius_m;
   topt.barycentric_tol = params.barycentric_tol;
   topt.dedup_m = params.dedup_m;
 

@@ -36,6 +36,7 @@ struct Builder {
     bvh.nodes[index].hi = hi;
     bvh.nodes[index].center = 0.5 * (lo + hi);
     bvh.nodes[index].half = 0.5 * (hi - lo);
+    bvh.nodes[index].radius = bvh.nodes[index].half.norm();
     if (end - begin <= max_leaf) {
       bvh.nodes[index].first = begin;
       bvh.nodes[index].count = end - begin;

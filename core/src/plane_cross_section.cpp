@@ -1,5 +1,7 @@
 #include "cordgrasp/core/plane_cross_section.h"
 
+#include "slice_triangle.h"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -8,43 +10,12 @@
 namespace cordgrasp {
 namespace {
 
+using detail::Crossing;
+using detail::signed_distance;
+using detail::slice_triangle;
+
 /// Conservative slack when skipping BVH boxes, far above rounding of box-vs-vertex distances.
 constexpr double kBoxSlack_m = 1e-10;
-
-struct Crossing {
-  Eigen::Vector2d p;
-  std::uint64_t edge_key;
-};
-
-inline double signed_distance(const Eigen::Vector3d& x, const PlaneFrame& f) {
-  return f.normal.dot(x - f.origin);
-}
-
-/// Crossing of edge (i, j) with the plane, computed from the lower vertex index.
-inline Crossing edge_crossing(const std::vector<Eigen::Vector3d>& v, int i, int j, double si,
-                              double sj, const PlaneFrame& f) {
-  if (j < i) {
-    std::swap(i, j);
-    std::swap(si, sj);
-  }
-  const Eigen::Vector3d x = v[i] + (v[j] - v[i]) * (si / (si - sj));
-  return {f.to_2d(x), (std::uint64_t(std::uint32_t(i)) << 32) | std::uint32_t(j)};
-}
-
-/// Slices one triangle; returns false unless its vertex signs are mixed.
-inline bool slice_triangle(const std::vector<Eigen::Vector3d>& v, const Eigen::Vector3i& t,
-                           const PlaneFrame& f, Crossing& c0, Crossing& c1) {
-  const double s[3] = {signed_distance(v[t[0]], f), signed_distance(v[t[1]], f),
-                       signed_distance(v[t[2]], f)};
-  const bool pos[3] = {s[0] > 0.0, s[1] > 0.0, s[2] > 0.0};
-  if (pos[0] == pos[1] && pos[1] == pos[2]) return false;
-  // The odd vertex (sign differs from both others) owns the two mixed edges.
-  const int odd = (pos[0] != pos[1] && pos[0] != pos[2]) ? 0 : (pos[1] != pos[0] ? 1 : 2);
-  const int a = (odd + 1) % 3, b = (odd + 2) % 3;
-  c0 = edge_crossing(v, t[odd], t[a], s[odd], s[a], f);
-  c1 = edge_crossing(v, t[odd], t[b], s[odd], s[b], f);
-  return true;
-}
 
 /// Edge half-planes of a counter-clockwise 2D triangle: inside ⇔ n_k·x ≤ d_k for all k.
 struct RegionTest {
@@ -79,11 +50,9 @@ void visit_straddling_triangles(const MeshBvh& bvh, const PlaneFrame& f,
     const double radius = abs_n.dot(node.half);
     const double sc = signed_distance(node.center, f);
     if (sc - radius > kBoxSlack_m || sc + radius < -kBoxSlack_m) continue;
-    if (region) {
-      // The node's bounding sphere cuts the plane in a disk around the projected centre.
-      const double r2 = node.half.squaredNorm() - sc * sc;
-      if (!region->may_meet(f.to_2d(node.center), std::sqrt(std::max(0.0, r2)))) continue;
-    }
+    // The node's bounding sphere meets the plane inside a disk of at most its radius around
+    // the projected centre.
+    if (region && !region->may_meet(f.to_2d(node.center), node.radius)) continue;
     if (node.count > 0) {
       for (int k = node.first; k < node.first + node.count; ++k) visit(k);
     } else if (top + 2 <= 128) {  // always true: median-split depth is ≤ 64

@@ -50,30 +50,44 @@ std::optional<GraspRegion> scan_cord_set(const CordObject& object, const Eigen::
 
   const Eigen::Vector3d axis = region.normal.cross(region.p_m - p1).normalized();
   int n = cords_per_side(p1, p2, p3, region.p_m, palm_width_m, params);
-  // A set is valid only if every ±i cord is; the outermost ones fail most often, so they are
-  // built first (same result, less work). The shrinking variant needs increasing i.
   std::vector<Polyline3> upper(n), lower(n);  // index i − 1
-  const bool outermost_first = !params.shrink_on_failure;
-  for (int step = 0; step < n; ++step) {
-    const int i = outermost_first ? n - step : step + 1;
-    bool ok = true;
-    for (int side : {+1, -1}) {
-      const Eigen::AngleAxisd rot(side * i * params.scan_angle_rad, axis);
-      const Eigen::Vector3d q2 = p1 + rot * (p2 - p1), q3 = p1 + rot * (p3 - p1);
-      const std::optional<FrontCord> fc = front_cord(object, p1, q2, q3, params);
-      if (!fc || fc->cord_case != seed->cord_case) {
-        ok = false;
+  auto rotated = [&](int i, int side, Eigen::Vector3d& q2, Eigen::Vector3d& q3) {
+    const Eigen::AngleAxisd rot(side * i * params.scan_angle_rad, axis);
+    q2 = p1 + rot * (p2 - p1);
+    q3 = p1 + rot * (p3 - p1);
+  };
+  auto accept = [&](const std::optional<FrontCord>& fc, int i, int side) {
+    if (!fc || fc->cord_case != seed->cord_case) return false;
+    (side > 0 ? upper : lower)[i - 1] = fc->cord_3d();
+    return true;
+  };
+  if (params.shrink_on_failure) {
+    // §11.6 variant: increasing i; the first failing ±i shrinks n to i − 1 (n ≥ 1 required).
+    for (int i = 1; i <= n; ++i) {
+      bool ok = true;
+      for (int side : {+1, -1}) {
+        Eigen::Vector3d q2, q3;
+        rotated(i, side, q2, q3);
+        if (!(ok = accept(front_cord(object, p1, q2, q3, params), i, side))) break;
+      }
+      if (!ok) {
+        if (i == 1) return fail(ScanFailure::kSideCord, failure);
+        n = i - 1;
+        upper.resize(n);
+        lower.resize(n);
         break;
       }
-      (side > 0 ? upper : lower)[i - 1] = fc->cord_3d();
     }
-    if (!ok) {
-      if (outermost_first || i == 1) return fail(ScanFailure::kSideCord, failure);
-      n = i - 1;  // symmetric shrinking (spec §11.6 flag)
-      upper.resize(n);
-      lower.resize(n);
-      break;
-    }
+  } else {
+    // A set is valid only if every ±i cord is; the outermost cords fail most often, so they
+    // are built first (same result, less work).
+    for (int i = n; i >= 1; --i)
+      for (int side : {+1, -1}) {
+        Eigen::Vector3d q2, q3;
+        rotated(i, side, q2, q3);
+        if (!accept(front_cord(object, p1, q2, q3, params), i, side))
+          return fail(ScanFailure::kSideCord, failure);
+      }
   }
   region.n = n;
   region.front_cords.reserve(2 * n + 1);

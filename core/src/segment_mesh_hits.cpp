@@ -57,12 +57,13 @@ std::vector<SegmentHit> segment_mesh_hits(const Mesh& mesh, const Eigen::Vector3
   return finish(hits, p0, p1, options);
 }
 
-std::vector<SegmentHit> segment_mesh_hits(const MeshBvh& bvh, const Eigen::Vector3d& p0,
-                                          const Eigen::Vector3d& p1,
-                                          const SegmentHitOptions& options) {
-  std::vector<SegmentHit> hits;
-  if (bvh.nodes.empty()) return hits;
-  const Eigen::Vector3d d = p1 - p0;
+namespace {
+
+/// Visits BVH leaf triangles whose (padded) box the segment crosses; stops when visit → true.
+template <typename Visit>
+void visit_segment_triangles(const MeshBvh& bvh, const Eigen::Vector3d& p0,
+                             const Eigen::Vector3d& d, Visit&& visit) {
+  if (bvh.nodes.empty()) return;
   Eigen::Vector3d inv_d;
   for (int c = 0; c < 3; ++c)
     inv_d[c] = d[c] != 0.0 ? 1.0 / d[c] : std::numeric_limits<double>::infinity();
@@ -90,18 +91,45 @@ std::vector<SegmentHit> segment_mesh_hits(const MeshBvh& bvh, const Eigen::Vecto
     }
     if (miss) continue;
     if (node.count > 0) {
-      for (int k = node.first; k < node.first + node.count; ++k) {
-        const Eigen::Vector3i& t = bvh.triangles[k];
-        const double s =
-            intersect(p0, d, bvh.vertices[t[0]], bvh.vertices[t[1]], bvh.vertices[t[2]]);
-        if (s >= 0.0) hits.push_back({s, p0 + s * d, bvh.triangle_ids[k]});
-      }
-    } else if (top + 2 <= 128) {
+      for (int k = node.first; k < node.first + node.count; ++k)
+        if (visit(k)) return;
+    } else if (top + 2 <= 128) {  // always true: median-split depth is ≤ 64
       stack[top++] = node.first;
       stack[top++] = index + 1;
     }
   }
+}
+
+}  // namespace
+
+std::vector<SegmentHit> segment_mesh_hits(const MeshBvh& bvh, const Eigen::Vector3d& p0,
+                                          const Eigen::Vector3d& p1,
+                                          const SegmentHitOptions& options) {
+  std::vector<SegmentHit> hits;
+  const Eigen::Vector3d d = p1 - p0;
+  visit_segment_triangles(bvh, p0, d, [&](int k) {
+    const Eigen::Vector3i& t = bvh.triangles[k];
+    const double s = intersect(p0, d, bvh.vertices[t[0]], bvh.vertices[t[1]], bvh.vertices[t[2]]);
+    if (s >= 0.0) hits.push_back({s, p0 + s * d, bvh.triangle_ids[k]});
+    return false;
+  });
   return finish(hits, p0, p1, options);
+}
+
+bool segment_meets_mesh(const MeshBvh& bvh, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+                        double margin_m) {
+  const Eigen::Vector3d d = p1 - p0;
+  const double len = d.norm();
+  if (len <= 2.0 * margin_m) return false;
+  const double t_lo = margin_m / len, t_hi = 1.0 - margin_m / len;
+  bool hit = false;
+  visit_segment_triangles(bvh, p0, d, [&](int k) {
+    const Eigen::Vector3i& t = bvh.triangles[k];
+    const double s = intersect(p0, d, bvh.vertices[t[0]], bvh.vertices[t[1]], bvh.vertices[t[2]]);
+    hit = s > t_lo && s < t_hi;
+    return hit;
+  });
+  return hit;
 }
 
 }  // namespace cordgrasp

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "convex_xor_area.h"
 #include "plane_geometry_2d.h"
 
 namespace cordgrasp {
@@ -60,30 +61,7 @@ double intersection_area(const std::vector<Eigen::Vector2d>& p,
 
 double convex_xor_area(const std::vector<Eigen::Vector2d>& p,
                        const std::vector<Eigen::Vector2d>& q) {
-  const double ap = polygon_area(p), aq = polygon_area(q);
-  if (degenerate(p) || degenerate(q)) return ap + aq;
-  // Sutherland–Hodgman: clip P by each edge of Q (made counter-clockwise).
-  thread_local std::vector<Eigen::Vector2d> cur, next;
-  cur.assign(p.begin(), p.end());
-  const bool ccw = detail::signed_polygon_area(q) > 0.0;
-  const size_t m = q.size();
-  for (size_t k = 0; k < m && !cur.empty(); ++k) {
-    const Eigen::Vector2d& a = ccw ? q[k] : q[m - 1 - k];
-    const Eigen::Vector2d& b = ccw ? q[(k + 1) % m] : q[(2 * m - 2 - k) % m];
-    const Eigen::Vector2d e = b - a;
-    next.clear();
-    const size_t n = cur.size();
-    for (size_t i = 0; i < n; ++i) {
-      const Eigen::Vector2d& s = cur[i];
-      const Eigen::Vector2d& t = cur[(i + 1) % n];
-      const double ds = cross2(e, s - a), dt = cross2(e, t - a);
-      if (ds >= 0.0) next.push_back(s);
-      if ((ds >= 0.0) != (dt >= 0.0)) next.push_back(s + (t - s) * (ds / (ds - dt)));
-    }
-    cur.swap(next);
-  }
-  const double ai = cur.size() < 3 ? 0.0 : polygon_area(cur);
-  return std::max(0.0, ap + aq - 2.0 * ai);
+  return detail::convex_xor_area(p.data(), p.size(), q.data(), q.size());
 }
 
 }  // namespace cordgrasp

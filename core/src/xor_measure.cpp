@@ -2,16 +2,15 @@
 
 #include <stdexcept>
 
+#include "convex_xor_area.h"
 #include "cordgrasp/core/xor_area.h"
 
 namespace cordgrasp {
 namespace {
 
-std::vector<Eigen::Vector2d> project(const Polyline3& cord, const PlaneFrame& frame) {
-  std::vector<Eigen::Vector2d> q;
-  q.reserve(cord.size());
-  for (const Eigen::Vector3d& x : cord) q.push_back(frame.to_2d(x));
-  return q;  // closing edge P_l → P_r is implicit
+void project(const Polyline3& cord, const PlaneFrame& frame, std::vector<Eigen::Vector2d>& q) {
+  q.clear();
+  for (const Eigen::Vector3d& x : cord) q.push_back(frame.to_2d(x));  // P_l→P_r implicit
 }
 
 }  // namespace
@@ -22,13 +21,14 @@ double xor_measure(const std::vector<Polyline3>& front_cords, const PlaneFrame& 
   if (count < 3 || count % 2 == 0)
     throw std::invalid_argument("xor_measure: need 2n+1 front cords with n >= 1");
   const size_t n = count / 2;
-  const std::vector<Eigen::Vector2d> q0 = project(front_cords[n], seed_frame);
+  thread_local std::vector<Eigen::Vector2d> q0, qi;
+  project(front_cords[n], seed_frame, q0);
   double sum = 0.0;
   for (size_t i = 0; i < count; ++i) {
     if (i == n) continue;
-    const std::vector<Eigen::Vector2d> qi = project(front_cords[i], seed_frame);
+    project(front_cords[i], seed_frame, qi);
     sum += params.xor_backend == XorBackend::kConvex
-               ? convex_xor_area(q0, qi)
+               ? detail::convex_xor_area(q0.data(), q0.size(), qi.data(), qi.size())
                : xor_area(q0, qi, params.clipper_scale);
   }
   return sum / double(2 * n);

@@ -7,6 +7,7 @@
 #include "cordgrasp/core/cord_params.h"
 #include "cordgrasp/core/grasp_region.h"
 #include "cordgrasp/core/guide_frame.h"
+#include "cordgrasp/core/plane_cross_section.h"
 
 namespace cordgrasp {
 
@@ -40,5 +41,15 @@ std::optional<FrontCord> front_cord(const CordObject& object, const Eigen::Vecto
                                     const Eigen::Vector3d& p2, const Eigen::Vector3d& p3,
                                     const CordParams& params = {},
                                     FrontCordFailure* failure = nullptr);
+
+/// front_cord() from the cross-section segments of guide_frame(P1, P2, P3) (Primitive A; any
+/// superset of the segments meeting the closed triangle gives the same result). `radius_m` is
+/// the object's bounding radius r (sets TIGHTEN's eps_a).
+std::optional<FrontCord> front_cord_from_segments(const PlaneFrame& frame,
+                                                  const Eigen::Vector3d& p2,
+                                                  const Eigen::Vector3d& p3,
+                                                  const std::vector<Segment2>& segments,
+                                                  double radius_m, const CordParams& params = {},
+                                                  FrontCordFailure* failure = nullptr);
 
 }  // namespace cordgrasp

@@ -14,6 +14,7 @@ struct MeshBvh {
     Eigen::Vector3d hi = Eigen::Vector3d::Zero();  ///< box max [m]
     Eigen::Vector3d center = Eigen::Vector3d::Zero();  ///< (lo + hi) / 2 [m]
     Eigen::Vector3d half = Eigen::Vector3d::Zero();    ///< (hi − lo) / 2 [m]
+    double radius = 0.0;                               ///< ‖half‖: bounding-sphere radius [m]
     int first = 0;  ///< leaf: first index into `triangles`; inner node: index of right child
     int count = 0;  ///< leaf: number of triangles; 0 marks an inner node (left child = own + 1)
   };

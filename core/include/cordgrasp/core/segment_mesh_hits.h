@@ -32,4 +32,9 @@ std::vector<SegmentHit> segment_mesh_hits(const MeshBvh& bvh, const Eigen::Vecto
                                           const Eigen::Vector3d& p1,
                                           const SegmentHitOptions& options = {});
 
+/// True when segment p0→p1 hits the soup farther than `margin_m` from both ends (Primitive B
+/// with early exit; same predicate as segment_mesh_hits).
+bool segment_meets_mesh(const MeshBvh& bvh, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+                        double margin_m = 1e-9);
+
 }  // namespace cordgrasp
