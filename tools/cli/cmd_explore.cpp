@@ -20,6 +20,8 @@ struct ExploreOptions {
   int sets = 20;
   std::uint64_t seed = 1;
   bool no_local_improvement = false;
+  bool shrink_on_failure = false;
+  std::string xor_backend = "convex";
   double time_limit_s = 30.0;
   int top = 20;
   std::string json_path;
@@ -66,6 +68,8 @@ void run_explore(const ExploreOptions& opt) {
   params.seed = opt.seed;
   params.local_improvement = !opt.no_local_improvement;
   params.time_limit_s = opt.time_limit_s;
+  params.shrink_on_failure = opt.shrink_on_failure;
+  params.xor_backend = opt.xor_backend == "convex" ? XorBackend::kConvex : XorBackend::kClipper;
   ExplorationStats stats;
   const std::vector<GraspRegion> regions = explore_cords(mesh, opt.palm_width_m, params, &stats);
 
@@ -109,6 +113,8 @@ void run_explore(const ExploreOptions& opt) {
     j["sets"] = opt.sets;
     j["local_improvement"] = params.local_improvement;
     j["time_limit_s"] = opt.time_limit_s;
+    j["shrink_on_failure"] = opt.shrink_on_failure;
+    j["xor_backend"] = opt.xor_backend;
     j["stats"] = {{"triangles_sampled", stats.triangles_sampled},
                   {"triangles_acute", stats.triangles_acute},
                   {"seed_cords", stats.seed_cords},
@@ -149,6 +155,14 @@ void add_explore_command(CLI::App& app) {
   cmd->add_option("--seed", opt->seed, "Seed of the random generator")->capture_default_str();
   cmd->add_flag("--no-local-improvement", opt->no_local_improvement,
                 "Skip the local-improvement pass");
+  cmd->add_flag("--shrink-on-failure", opt->shrink_on_failure,
+                "Keep a set whose outer cords fail, with n shrunk to the cords that succeed "
+                "(spec 11.6 variant; default: discard the set)");
+  cmd->add_option("--xor", opt->xor_backend,
+                  "chi backend: clipper (Clipper 6.4.2 integer XOR, spec 6) or convex (exact "
+                  "convex clipping, same value, faster)")
+      ->check(CLI::IsMember({"clipper", "convex"}))
+      ->capture_default_str();
   cmd->add_option("--time-limit", opt->time_limit_s,
                   "Wall-clock cap [s]; 0 = none. Hitting it makes results time-dependent")
       ->check(CLI::NonNegativeNumber)
