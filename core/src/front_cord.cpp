@@ -7,6 +7,7 @@
 #include "cordgrasp/core/tighten_cord.h"
 #include "convex_hull_2d.h"
 #include "plane_geometry_2d.h"
+#include "segment_pierces.h"
 
 namespace cordgrasp {
 namespace {
@@ -107,22 +108,6 @@ void segment_hits(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Segm
   }
 }
 
-/// Open-segment test of spec §2.4 for one cross-section segment (see open_segment_blocked).
-bool blocks(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double len, const Segment2& s,
-            double eps) {
-  const Eigen::Vector2d r = b - a, sv = s.b - s.a, qa = s.a - a;
-  const double t_lo = eps / len, t_hi = 1.0 - eps / len;
-  const double denom = cross2(r, sv);
-  if (denom != 0.0) {
-    const double t = cross2(qa, sv) / denom, u = cross2(qa, r) / denom;
-    return u >= 0.0 && u <= 1.0 && t > t_lo && t < t_hi;
-  }
-  if (cross2(qa, r) != 0.0) return false;
-  const double len2 = len * len;
-  const double ta = qa.dot(r) / len2, tb = (s.b - a).dot(r) / len2;
-  return std::max(std::min(ta, tb), t_lo) < std::min(std::max(ta, tb), t_hi);
-}
-
 std::optional<FrontCord> fail(FrontCordFailure why, FrontCordFailure* out) {
   if (out) *out = why;
   return std::nullopt;
@@ -161,6 +146,7 @@ std::optional<FrontCord> front_cord_from_segments(const PlaneFrame& frame,
   const Eigen::Vector2d q1(0.0, 0.0), q2 = fc.frame.to_2d(p2), q3 = fc.frame.to_2d(p3);
   const double eps = params.eps_len_m;
   const double len12 = (q2 - q1).norm(), len13 = (q3 - q1).norm();
+  const Eigen::Vector2d dir12 = (q2 - q1) / len12, dir13 = (q3 - q1) / len13;
 
   // One pass over S: guide-edge freedom, P2P3 hits, candidates inside the closed triangle.
   // Barycentric weights (l1, l2, l3) of each endpoint: l3 = 0 on line P1P2, l2 = 0 on P1P3,
@@ -185,8 +171,8 @@ std::optional<FrontCord> front_cord_from_segments(const PlaneFrame& frame,
     const double b1 = cross2(q2 - s.b, q3 - s.b) * inv_area;
     const double b2 = cross2(q3 - s.b, q1 - s.b) * inv_area;
     const double b3 = cross2(q1 - s.b, q2 - s.b) * inv_area;
-    if ((!one_side(a3, b3) && blocks(q1, q2, len12, s, eps)) ||
-        (!one_side(a2, b2) && blocks(q1, q3, len13, s, eps)))
+    if ((!one_side(a3, b3) && detail::segment_pierces(q1, dir12, len12, s, eps)) ||
+        (!one_side(a2, b2) && detail::segment_pierces(q1, dir13, len13, s, eps)))
       return fail(FrontCordFailure::kGuideBlocked, failure);
     const size_t nhits = ws.hits.size();
     if (!one_side(a1, b1)) segment_hits(q2, q3, s, ws.hits);

@@ -10,6 +10,8 @@ namespace {
 
 /// Entry–exit spreads above this are not one grazing contact.
 constexpr double kMaxSpread_m = 1e-5;
+/// The march stops this far before the guide's end point.
+constexpr double kEndGap_m = 1e-6;
 
 struct Guide {
   const std::vector<Eigen::Vector3d>& pts;
@@ -49,10 +51,14 @@ std::optional<std::vector<Eigen::Vector3d>> tighten_cord_sampled(
   std::vector<Eigen::Vector3d> cord{guide.front()};
   Eigen::Vector3d a = guide.front();
   double skip_a = opt.self_m;  // grows to the entry–exit spread of the last grazing ray
+  // The guide may end on the surface (P_l): a ray between two surface points can cross the
+  // interior without any hit, so the march stops kEndGap_m before the end, where the target is
+  // still outside, and appends the end point afterwards.
+  const double end = std::max(0.0, total - kEndGap_m);
   double u = 0.0;
   int events = 0;
-  while (u < total) {
-    const double next = std::min(u + du, total);
+  while (u < end) {
+    const double next = std::min(u + du, end);
     if (blocking_hits(bvh, a, g.at(next), skip_a, opt.self_m).empty()) {
       u = next;
       continue;
