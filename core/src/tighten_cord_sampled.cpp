@@ -9,7 +9,7 @@ namespace cordgrasp {
 namespace {
 
 /// Entry–exit spreads above this are not one grazing contact.
-constexpr double kMaxSpread_m = 1e-5;
+constexpr double kMaxSpread_m = 1e-7;
 /// The march stops this far before the guide's end point.
 constexpr double kEndGap_m = 1e-6;
 
@@ -83,7 +83,7 @@ std::optional<std::vector<Eigen::Vector3d>> tighten_cord_sampled(
     if (hits.size() > 1) spread = (hits[1].point - hits[0].point).norm();
     if (spread > kMaxSpread_m) spread = 0.0;  // the second hit is another surface part
     a = hits.front().point;
-    skip_a = std::max(opt.self_m, 4.0 * spread);
+    skip_a = std::max(opt.self_m, 2.0 * spread);
     cord.push_back(a);
     u = lo;
   }

@@ -1,4 +1,5 @@
-// `cordgrasp explore`: the cord exploration stage (spec §2–§6) on one object.
+// `cordgrasp explore`: the cord exploration stage (spec §2–§6) on one object, for a hand's
+// palm width (--hand, default the shipped default hand) or an explicit --palm-width-m.
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -7,7 +8,9 @@
 #include "commands.h"
 #include "cordgrasp/core/atomic_file.h"
 #include "cordgrasp/core/explore_cords.h"
+#include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
+#include "cordgrasp/core/palm_width.h"
 #include "json_util.h"
 
 namespace cordgrasp::cli {
@@ -16,6 +19,7 @@ namespace {
 struct ExploreOptions {
   std::string object;
   std::string units = "m";
+  std::string hand;          // empty: the shipped default hand (unless --palm-width-m)
   double palm_width_m = 0.0;
   int sets = 20;
   std::uint64_t seed = 1;
@@ -63,6 +67,14 @@ void run_explore(const ExploreOptions& opt) {
   MeshLoadOptions load;
   load.units = parse_length_units(opt.units);
   const Mesh mesh = load_mesh(opt.object, load);
+  std::string hand_text = "--palm-width-m";
+  double palm_width_m = opt.palm_width_m;
+  if (palm_width_m <= 0.0) {
+    const std::string hand_name = opt.hand.empty() ? default_hand_name() : opt.hand;
+    const HandModel hand = load_hand(hand_name);
+    palm_width_m = palm_width(hand);
+    hand_text = "hand " + hand_name;
+  }
   CordParams params;
   params.sets = opt.sets;
   params.seed = opt.seed;
@@ -71,10 +83,10 @@ void run_explore(const ExploreOptions& opt) {
   params.shrink_on_failure = opt.shrink_on_failure;
   params.xor_backend = opt.xor_backend == "convex" ? XorBackend::kConvex : XorBackend::kClipper;
   ExplorationStats stats;
-  const std::vector<GraspRegion> regions = explore_cords(mesh, opt.palm_width_m, params, &stats);
+  const std::vector<GraspRegion> regions = explore_cords(mesh, palm_width_m, params, &stats);
 
   std::cout << "object   " << mesh.name << "  (" << mesh.triangles.size() << " triangles)  "
-            << "W_palm " << opt.palm_width_m << " m  seed " << opt.seed << '\n'
+            << "W_palm " << palm_width_m << " m (" << hand_text << ")  seed " << opt.seed << '\n'
             << "explored " << std::fixed << std::setprecision(4) << stats.time_s << " s  ("
             << "sampling " << stats.sampling_time_s << " s, local improvement "
             << stats.improvement_time_s << " s)" << (stats.hit_time_limit ? "  TIME LIMIT" : "")
@@ -108,7 +120,8 @@ void run_explore(const ExploreOptions& opt) {
     j["object"] = opt.object;
     j["name"] = mesh.name;
     j["triangles"] = mesh.triangles.size();
-    j["palm_width_m"] = opt.palm_width_m;
+    j["palm_width_m"] = palm_width_m;
+    j["palm_width_from"] = hand_text;
     j["seed"] = opt.seed;
     j["sets"] = opt.sets;
     j["local_improvement"] = params.local_improvement;
@@ -146,9 +159,14 @@ void add_explore_command(CLI::App& app) {
       "explore", "Cord exploration: ranked grasp regions (front-cord sets by ascending chi)");
   cmd->add_option("--object,-o", opt->object, "Object mesh file (OBJ, STL, PLY, OFF, DAE, glTF)")
       ->required();
-  cmd->add_option("--palm-width-m", opt->palm_width_m, "Palm width W_palm of the hand [m]")
-      ->required()
-      ->check(CLI::PositiveNumber);
+  CLI::Option* hand =
+      cmd->add_option("--hand", opt->hand,
+                      std::string("Hand (shipped name or description path) whose palm width is "
+                                  "used; default: ") +
+                          default_hand_name());
+  cmd->add_option("--palm-width-m", opt->palm_width_m, "Palm width W_palm instead of a hand [m]")
+      ->check(CLI::PositiveNumber)
+      ->excludes(hand);
   cmd->add_option("--sets", opt->sets, "Valid sets to sample before local improvement (K)")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();

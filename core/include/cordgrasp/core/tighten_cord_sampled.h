@@ -10,7 +10,7 @@ namespace cordgrasp {
 /// Resolution of the sampled cord (spec §2.5).
 struct SampledTightenOptions {
   double step_m = 1e-3;    ///< march step Δu = min(step_m, L/1000) along the guide [m]
-  double bisect_m = 1e-6;  ///< bisect until ‖G(u_hi) − G(u_lo)‖ < this [m] (1e-10 for tests)
+  double bisect_m = 1e-6;  ///< bisect until ‖G(u_hi) − G(u_lo)‖ < this [m] (tests: 1e-12)
   double self_m = 1e-7;    ///< ε_self: hits this close to the ray origin or target are ignored [m]
 };
 
