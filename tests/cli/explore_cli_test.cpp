@@ -7,6 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/shapes.h"
 #include "test_paths.h"
@@ -54,10 +55,17 @@ TEST(ExploreCli, PrintsRankedRegionsAndWritesJson) {
   }
 }
 
-TEST(ExploreCli, FailsWithoutAPalmWidth) {
+TEST(ExploreCli, UsesTheDefaultHandsPalmWidthUnlessGivenOne) {
   const BottleFile file;
-  const test::CommandResult r = test::run_cordgrasp("explore --object " + file.obj.string());
-  EXPECT_NE(r.exit_code, 0);
+  const test::CommandResult r =
+      test::run_cordgrasp("explore --object " + file.obj.string() + " --sets 2 --top 1");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find(std::string("hand ") + default_hand_name()), std::string::npos)
+      << r.output;
+  const test::CommandResult both = test::run_cordgrasp(
+      "explore --object " + file.obj.string() + " --hand " + default_hand_name() +
+      " --palm-width-m 0.08");
+  EXPECT_NE(both.exit_code, 0);
 }
 
 TEST(ExploreCli, NamesTheMissingObjectFile) {

@@ -96,7 +96,11 @@ void run_explore(const ExploreOptions& opt) {
             << " sets tried, " << stats.sets_valid << " valid; local improvement "
             << stats.improvement_valid << '/' << stats.improvement_tried << " valid\n";
   if (regions.empty()) {
-    std::cout << "no eligible grasp region found\n";
+    std::cout << "no grasp region found";
+    if (stats.sets_tried > 0 && !params.shrink_on_failure)
+      std::cout << " (eligible seeds existed but their outer scanned cords failed: the object "
+                   "may be narrower than the palm; try --shrink-on-failure)";
+    std::cout << '\n';
   } else {
     std::cout << "rank  chi[mm^2]  case   n  xi[mm]  P1 [m]                       "
                  "P_l [m]                      P_r [m]                      LI\n";
