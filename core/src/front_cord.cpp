@@ -178,8 +178,15 @@ std::optional<FrontCord> front_cord_from_segments(const PlaneFrame& frame,
     if (!one_side(a1, b1)) segment_hits(q2, q3, s, ws.hits);
     const bool in_a = a1 >= -tol && a2 >= -tol && a3 >= -tol;
     const bool in_b = b1 >= -tol && b2 >= -tol && b3 >= -tol;
-    if (in_a) ws.candidates.push_back(s.a);
-    if (in_b) ws.candidates.push_back(s.b);
+    // Shared mesh edges give bit-identical endpoints; skipping a repeat of one of the last two
+    // candidates (adjacent triangles are usually sliced one after the other) is exact.
+    auto add = [&](const Eigen::Vector2d& v) {
+      const size_t m = ws.candidates.size();
+      if ((m > 0 && ws.candidates[m - 1] == v) || (m > 1 && ws.candidates[m - 2] == v)) return;
+      ws.candidates.push_back(v);
+    };
+    if (in_a) add(s.a);
+    if (in_b) add(s.b);
     if (in_a || in_b || ws.hits.size() > nhits) ws.local_segments.push_back(s);
   }
 
