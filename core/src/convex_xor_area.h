@@ -10,8 +10,7 @@ namespace cordgrasp::detail {
 /// Signed shoelace area of n points (positive counter-clockwise) [m²].
 inline double signed_area(const Eigen::Vector2d* p, size_t n) {
   double a = 0.0;
-  for (size_t k = 0, j = n - 1; k < n; j = k++)
-    a += p[j].x() * p[k].y() - p[j].y() * p[k].x();
+  for (size_t k = 0, j = n - 1; k < n; j = k++) a += p[j].x() * p[k].y() - p[j].y() * p[k].x();
   return 0.5 * a;
 }
 

@@ -39,8 +39,7 @@ double seconds_since(Clock::time_point t0) {
 std::vector<GraspRegion> explore_cords(const Mesh& mesh, double palm_width_m,
                                        const CordParams& params, ExplorationStats* stats_out) {
   const Clock::time_point start = Clock::now();
-  if (!(palm_width_m > 0.0))
-    throw std::invalid_argument("explore_cords: palm width must be > 0 m");
+  if (!(palm_width_m > 0.0)) throw std::invalid_argument("explore_cords: palm width must be > 0 m");
   const CordObject object = make_cord_object(mesh);
   ExplorationStats st;
   const bool timed = params.time_limit_s > 0.0;
@@ -123,9 +122,8 @@ std::vector<GraspRegion> explore_cords(const Mesh& mesh, double palm_width_m,
   }
   st.improvement_time_s = seconds_since(improvement_start);
 
-  std::stable_sort(found.begin(), found.end(), [](const GraspRegion& a, const GraspRegion& b) {
-    return a.chi_m2 < b.chi_m2;
-  });
+  std::stable_sort(found.begin(), found.end(),
+                   [](const GraspRegion& a, const GraspRegion& b) { return a.chi_m2 < b.chi_m2; });
   st.time_s = seconds_since(start);
   if (stats_out) *stats_out = st;
   return found;

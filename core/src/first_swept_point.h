@@ -10,8 +10,8 @@ namespace cordgrasp::detail {
 /// Index of the first point swept by the ray from `a` as its target moves from ga to gb
 /// (spec §2.4), or -1. `area` = cross(ga−a, gb−a), non-zero.
 inline int first_swept_point(const Eigen::Vector2d& a, const Eigen::Vector2d& ga,
-                      const Eigen::Vector2d& gb, double area,
-                      const std::vector<Eigen::Vector2d>& points, double barycentric_tol,
+                             const Eigen::Vector2d& gb, double area,
+                             const std::vector<Eigen::Vector2d>& points, double barycentric_tol,
                              double eps_len_m) {
   const double sgn = area > 0.0 ? 1.0 : -1.0;
   const double inv = 1.0 / area;
@@ -42,6 +42,5 @@ inline int first_swept_point(const Eigen::Vector2d& a, const Eigen::Vector2d& ga
   }
   return best;
 }
-
 
 }  // namespace cordgrasp::detail

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "convex_hull_2d.h"
 #include "cordgrasp/core/plane_cross_section.h"
 #include "cordgrasp/core/tighten_cord.h"
-#include "convex_hull_2d.h"
 #include "plane_geometry_2d.h"
 #include "segment_pierces.h"
 

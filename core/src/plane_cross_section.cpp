@@ -36,8 +36,8 @@ struct RegionTest {
 /// Calls visit(k) for every BVH triangle k in a leaf whose box the plane may cut (and, with
 /// `region`, whose bounding sphere may meet the region).
 template <typename Visit>
-void visit_straddling_triangles(const MeshBvh& bvh, const SlicePlane& f,
-                                const RegionTest* region, Visit&& visit) {
+void visit_straddling_triangles(const MeshBvh& bvh, const SlicePlane& f, const RegionTest* region,
+                                Visit&& visit) {
   if (bvh.nodes.empty()) return;
   const double anx = std::abs(f.nx), any = std::abs(f.ny), anz = std::abs(f.nz);
   int stack[128];
@@ -74,8 +74,7 @@ struct Collector {
   };
   std::vector<Segment2> segments;
   std::vector<End> ends;
-  void add(const std::vector<Eigen::Vector3d>& v, const Eigen::Vector3i& t,
-           const SlicePlane& f) {
+  void add(const std::vector<Eigen::Vector3d>& v, const Eigen::Vector3i& t, const SlicePlane& f) {
     Eigen::Vector2d c0, c1;
     int odd = 0;
     if (!detail::slice_triangle(v, t, f, c0, c1, &odd)) return;

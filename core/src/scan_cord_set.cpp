@@ -18,9 +18,8 @@ std::optional<GraspRegion> fail(ScanFailure why, ScanFailure* out) {
 
 }  // namespace
 
-int cords_per_side(const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
-                   const Eigen::Vector3d& p3, const Eigen::Vector3d& p_m, double palm_width_m,
-                   const CordParams& params) {
+int cords_per_side(const Eigen::Vector3d& p1, const Eigen::Vector3d& p2, const Eigen::Vector3d& p3,
+                   const Eigen::Vector3d& p_m, double palm_width_m, const CordParams& params) {
   const Eigen::Vector3d v = (p_m - p1).normalized();
   const double d = std::abs((0.5 * (p2 + p3) - p1).dot(v));
   const double n = std::round(palm_width_m / (2.0 * params.scan_angle_rad * d));

@@ -20,9 +20,18 @@ struct SlicePlane {
   double ax, ay, az, a0;  // e1
   double bx, by, bz, b0;  // e2
   explicit SlicePlane(const PlaneFrame& f)
-      : nx(f.normal.x()), ny(f.normal.y()), nz(f.normal.z()), n0(f.normal.dot(f.origin)),
-        ax(f.e1.x()), ay(f.e1.y()), az(f.e1.z()), a0(f.e1.dot(f.origin)),
-        bx(f.e2.x()), by(f.e2.y()), bz(f.e2.z()), b0(f.e2.dot(f.origin)) {}
+      : nx(f.normal.x()),
+        ny(f.normal.y()),
+        nz(f.normal.z()),
+        n0(f.normal.dot(f.origin)),
+        ax(f.e1.x()),
+        ay(f.e1.y()),
+        az(f.e1.z()),
+        a0(f.e1.dot(f.origin)),
+        bx(f.e2.x()),
+        by(f.e2.y()),
+        bz(f.e2.z()),
+        b0(f.e2.dot(f.origin)) {}
   double distance(const Eigen::Vector3d& x) const {
     return nx * x.x() + ny * x.y() + nz * x.z() - n0;
   }
@@ -35,8 +44,8 @@ inline double signed_distance(const Eigen::Vector3d& x, const SlicePlane& f) {
 
 /// Crossing of edge (i, j) with the plane, computed from the lower vertex index so both
 /// triangles sharing the edge get bit-identical points.
-inline Eigen::Vector2d edge_crossing(const std::vector<Eigen::Vector3d>& v, int i, int j,
-                                     double si, double sj, const SlicePlane& f) {
+inline Eigen::Vector2d edge_crossing(const std::vector<Eigen::Vector3d>& v, int i, int j, double si,
+                                     double sj, const SlicePlane& f) {
   if (j < i) {
     std::swap(i, j);
     std::swap(si, sj);

@@ -15,9 +15,10 @@ inline double cross2(const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
 
 }  // namespace
 
-std::optional<std::vector<Eigen::Vector2d>> tighten_cord(
-    const std::vector<Eigen::Vector2d>& guide, const std::vector<Eigen::Vector2d>& points,
-    const std::vector<Segment2>& segments, const TightenOptions& opt) {
+std::optional<std::vector<Eigen::Vector2d>> tighten_cord(const std::vector<Eigen::Vector2d>& guide,
+                                                         const std::vector<Eigen::Vector2d>& points,
+                                                         const std::vector<Segment2>& segments,
+                                                         const TightenOptions& opt) {
   if (guide.empty()) return std::nullopt;
   const size_t cap = 4 * points.size() + 8;
   std::vector<Eigen::Vector2d> cord{guide.front()};
@@ -31,7 +32,8 @@ std::optional<std::vector<Eigen::Vector2d>> tighten_cord(
         if (open_segment_blocked(a, gb, segments, opt.eps_len_m)) return std::nullopt;
         break;
       }
-      const int best = detail::first_swept_point(a, ga, gb, area, points, opt.barycentric_tol, opt.eps_len_m);
+      const int best =
+          detail::first_swept_point(a, ga, gb, area, points, opt.barycentric_tol, opt.eps_len_m);
       if (best < 0) break;
       const Eigen::Vector2d v = points[best];
       cord.push_back(v);

@@ -1,7 +1,6 @@
 #include "cordgrasp/core/xor_area.h"
 
 #include <clipper.hpp>
-
 #include <cmath>
 
 #include "convex_xor_area.h"

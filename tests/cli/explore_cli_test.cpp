@@ -1,6 +1,5 @@
 // `cordgrasp explore`: prints ranked regions and writes them as JSON.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <filesystem>
@@ -19,7 +18,8 @@ namespace fs = std::filesystem;
 
 /// A temporary directory holding a 3 cm × 16 cm bottle-like cylinder as OBJ.
 struct BottleFile {
-  fs::path dir = fs::temp_directory_path() / ("cordgrasp_explore_cli_" + std::to_string(::getpid()));
+  fs::path dir =
+      fs::temp_directory_path() / ("cordgrasp_explore_cli_" + std::to_string(::getpid()));
   fs::path obj = dir / "bottle.obj";
   BottleFile() {
     fs::create_directories(dir);
@@ -34,9 +34,9 @@ struct BottleFile {
 TEST(ExploreCli, PrintsRankedRegionsAndWritesJson) {
   const BottleFile file;
   const fs::path json_path = file.dir / "regions.json";
-  const test::CommandResult r = test::run_cordgrasp(
-      "explore --object " + file.obj.string() + " --palm-width-m 0.085 --sets 4 --seed 3 " +
-      "--json " + json_path.string());
+  const test::CommandResult r = test::run_cordgrasp("explore --object " + file.obj.string() +
+                                                    " --palm-width-m 0.085 --sets 4 --seed 3 " +
+                                                    "--json " + json_path.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("chi[mm^2]"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("explored"), std::string::npos);
@@ -62,9 +62,9 @@ TEST(ExploreCli, UsesTheDefaultHandsPalmWidthUnlessGivenOne) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find(std::string("hand ") + default_hand_name()), std::string::npos)
       << r.output;
-  const test::CommandResult both = test::run_cordgrasp(
-      "explore --object " + file.obj.string() + " --hand " + default_hand_name() +
-      " --palm-width-m 0.08");
+  const test::CommandResult both =
+      test::run_cordgrasp("explore --object " + file.obj.string() + " --hand " +
+                          default_hand_name() + " --palm-width-m 0.08");
   EXPECT_NE(both.exit_code, 0);
 }
 

@@ -4,10 +4,10 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
-#include <map>
-#include <utility>
 #include <cmath>
+#include <map>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "cordgrasp/core/cord_object.h"
@@ -79,7 +79,8 @@ inline std::vector<Eigen::Vector2d> gift_wrap_hull(const std::vector<Eigen::Vect
   };
   size_t start = 0;
   for (size_t k = 1; k < pts.size(); ++k)
-    if (pts[k].y() < pts[start].y() || (pts[k].y() == pts[start].y() && pts[k].x() < pts[start].x()))
+    if (pts[k].y() < pts[start].y() ||
+        (pts[k].y() == pts[start].y() && pts[k].x() < pts[start].x()))
       start = k;
   std::vector<Eigen::Vector2d> hull;
   size_t cur = start;
@@ -90,8 +91,8 @@ inline std::vector<Eigen::Vector2d> gift_wrap_hull(const std::vector<Eigen::Vect
       if (k == cur) continue;
       const double c = cross(pts[next] - pts[cur], pts[k] - pts[cur]);
       // Clockwise-most candidate; on collinear ties the farthest (strict hull).
-      if (c < 0.0 || (c == 0.0 && (pts[k] - pts[cur]).squaredNorm() >
-                                      (pts[next] - pts[cur]).squaredNorm()))
+      if (c < 0.0 ||
+          (c == 0.0 && (pts[k] - pts[cur]).squaredNorm() > (pts[next] - pts[cur]).squaredNorm()))
         next = k;
     }
     cur = next;
@@ -118,8 +119,8 @@ inline bool is_watertight(const Mesh& mesh) {
   std::vector<int> id(mesh.vertices.size());
   for (size_t k = 0; k < mesh.vertices.size(); ++k) {
     const Eigen::Vector3d& v = mesh.vertices[k];
-    id[k] = weld.emplace(std::array<double, 3>{v.x(), v.y(), v.z()}, int(weld.size()))
-                .first->second;
+    id[k] =
+        weld.emplace(std::array<double, 3>{v.x(), v.y(), v.z()}, int(weld.size())).first->second;
   }
   std::map<std::pair<int, int>, int> uses;
   for (const Eigen::Vector3i& t : mesh.triangles)

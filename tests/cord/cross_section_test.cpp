@@ -105,8 +105,8 @@ TEST(SegmentMeshHits, BvhMatchesBruteForceOnRandomSegments) {
 TEST(SegmentMeshHits, ThroughABoxHitsBothFacesInOrder) {
   constexpr double kTol = 1e-12;
   const Mesh box = make_box_mesh(Eigen::Vector3d(0.04, 0.04, 0.04));
-  const std::vector<SegmentHit> hits = segment_mesh_hits(
-      box, Eigen::Vector3d(-0.1, 0.003, 0.001), Eigen::Vector3d(0.1, 0.003, 0.001));
+  const std::vector<SegmentHit> hits = segment_mesh_hits(box, Eigen::Vector3d(-0.1, 0.003, 0.001),
+                                                         Eigen::Vector3d(0.1, 0.003, 0.001));
   ASSERT_EQ(hits.size(), 2u);
   EXPECT_NEAR(hits[0].point.x(), -0.02, kTol);
   EXPECT_NEAR(hits[1].point.x(), 0.02, kTol);
@@ -116,7 +116,8 @@ TEST(CrossSectionDataset, BvhMatchesBruteForceOnSharedObjects) {
   CORDGRASP_REQUIRE_SHARED_DATA();
   std::mt19937_64 rng(5);
   for (const std::string dir : {"kit", "ycb", "simox"})
-    for (const std::string& path : test::files_in(test::shared_data_dir() + "/objects/" + dir, ".obj"))
+    for (const std::string& path :
+         test::files_in(test::shared_data_dir() + "/objects/" + dir, ".obj"))
       expect_bvh_matches_brute_force(load_mesh(path), 5, rng);
 }
 

@@ -1,11 +1,12 @@
 // Exploration stage (spec §5): determinism, complete ranked regions, local improvement, caps,
 // and robustness on every shared object.
+#include "cordgrasp/core/explore_cords.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "cord_test_util.h"
-#include "cordgrasp/core/explore_cords.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/scan_cord_set.h"
 #include "test_paths.h"
@@ -169,8 +170,7 @@ void expect_explores_to_finite_regions(const std::string& path) {
   CordParams capped = untimed();
   capped.max_iterations = 1;
   capped.sets = 5;
-  for (const GraspRegion& r : explore_cords(mesh, kPalmWidth_m, capped))
-    EXPECT_TRUE(all_finite(r));
+  for (const GraspRegion& r : explore_cords(mesh, kPalmWidth_m, capped)) EXPECT_TRUE(all_finite(r));
   // Objects narrower than about 0.8 W_palm along the scan (the 6 cm sphere, Dex-Net-scaled KIT
   // meshes) have no set whose outer cords all hit them under the default discard rule;
   // shrinking keeps the cords that fit.
@@ -188,13 +188,13 @@ TEST(ExploreCords, EveryShippedObjectExploresToAFiniteRegion) {
 }
 
 TEST(ExploreCords, ShippedObjectsWiderThanThePalmYieldRegionsWithDefaultParameters) {
-  for (const std::string name : {"bottle", "box", "kettle", "long_cylinder", "mug", "pliers",
-                                 "wine_glass"}) {
+  for (const std::string name :
+       {"bottle", "box", "kettle", "long_cylinder", "mug", "pliers", "wine_glass"}) {
     SCOPED_TRACE(name);
     ExplorationStats stats;
-    const auto regions = explore_cords(
-        load_mesh(test::source_dir() + "/assets/objects/" + name + ".obj"), kPalmWidth_m,
-        untimed(), &stats);
+    const auto regions =
+        explore_cords(load_mesh(test::source_dir() + "/assets/objects/" + name + ".obj"),
+                      kPalmWidth_m, untimed(), &stats);
     EXPECT_EQ(stats.sets_valid, 20);
     EXPECT_FALSE(regions.empty());
   }

@@ -1,12 +1,13 @@
 // Front cords (spec §3): Case I on a box, Case II on a book-like box, eligibility (§3.4), and
 // the hull-chain construction equals TIGHTEN.
+#include "cordgrasp/core/front_cord.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "cord_test_util.h"
 #include "cordgrasp/core/explore_cords.h"
-#include "cordgrasp/core/front_cord.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/seed_cord_eligible.h"
 #include "test_paths.h"
@@ -50,10 +51,10 @@ TEST(FrontCord, CaseIIOnABookLikeBoxWrapsTheNearEdge) {
   EXPECT_EQ(fc->cord_case, CordCase::kII);
   const Polyline3 cord = fc->cord_3d();
   // P_l, P_r: where P2P3 enters and leaves the book; the cord wraps the spine x = −0.1.
-  const Polyline3 expected = {{-0.06, y, -0.015}, {-0.1, y, -0.015}, {-0.1, y, 0.015},
-                              {-0.06, y, 0.015}};
+  const Polyline3 expected = {
+      {-0.06, y, -0.015}, {-0.1, y, -0.015}, {-0.1, y, 0.015}, {-0.06, y, 0.015}};
   EXPECT_LT(test::polyline_distance(cord, expected), kTol_m);
-  EXPECT_LT((cord.back() - expected.back()).norm(), kTol_m);   // P_l (P2 side)
+  EXPECT_LT((cord.back() - expected.back()).norm(), kTol_m);    // P_l (P2 side)
   EXPECT_LT((cord.front() - expected.front()).norm(), kTol_m);  // P_r (P3 side)
   EXPECT_NEAR(cord_xi(fc->cord), std::hypot(0.04, 0.015), kTol_m);
   // Parallel end segments pass the squeeze test: the seed is eligible.

@@ -1,5 +1,7 @@
 // TIGHTEN (spec §2.4): cords around square, L-shaped and circular cross-sections are the
 // relevant parts of the convex hull; the sampled ray-casting oracle (§2.5) agrees within 1 µm.
+#include "cordgrasp/core/tighten_cord.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -8,15 +10,14 @@
 #include "cordgrasp/core/front_cord.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/plane_cross_section.h"
-#include "cordgrasp/core/tighten_cord.h"
 #include "cordgrasp/core/tighten_cord_sampled.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
 namespace {
 
-constexpr double kExact_m = 1e-12;      ///< same geometry, different arithmetic
-constexpr double kOracleTol_m = 1e-6;   ///< sampled oracle vs exact TIGHTEN (issue 3)
+constexpr double kExact_m = 1e-12;     ///< same geometry, different arithmetic
+constexpr double kOracleTol_m = 1e-6;  ///< sampled oracle vs exact TIGHTEN (issue 3)
 
 using Poly2 = std::vector<Eigen::Vector2d>;
 
@@ -61,8 +62,10 @@ void expect_cords_are_hull_parts(const Mesh& mesh) {
   with_p1.push_back(q1);
   const Poly2 hull1 = test::gift_wrap_hull(with_p1);
   Poly2 closed_hull1 = hull_chain(hull1, q1, q1);
-  closed_hull1 = hull_chain(hull1, q1, hull1[(std::find(hull1.begin(), hull1.end(), q1) -
-                                             hull1.begin() + hull1.size() - 1) % hull1.size()]);
+  closed_hull1 = hull_chain(
+      hull1, q1,
+      hull1[(std::find(hull1.begin(), hull1.end(), q1) - hull1.begin() + hull1.size() - 1) %
+            hull1.size()]);
   closed_hull1.push_back(q1);
   EXPECT_LT(test::polyline_distance(*step1, closed_hull1), kExact_m);
   for (const Eigen::Vector2d& v : hull1) EXPECT_TRUE(has_vertex_near(*step1, v, kExact_m));
@@ -100,9 +103,8 @@ TEST(TightenCord, LShapeSectionCordsBridgeTheConcavity) {
   const PlaneFrame frame = guide_frame(p1, p2, p3);
   const CrossSection cs = plane_cross_section(l_shape, frame);
   const Eigen::Vector2d reflex = frame.to_2d(Eigen::Vector3d(-0.01, -0.01, 0.003));
-  const auto step1 = tighten_cord({frame.to_2d(p1), frame.to_2d(p2), frame.to_2d(p3),
-                                   frame.to_2d(p1)},
-                                  cs.points, cs.segments);
+  const auto step1 = tighten_cord(
+      {frame.to_2d(p1), frame.to_2d(p2), frame.to_2d(p3), frame.to_2d(p1)}, cs.points, cs.segments);
   ASSERT_TRUE(step1.has_value());
   EXPECT_FALSE(has_vertex_near(*step1, reflex, 1e-6));
 }
@@ -114,8 +116,8 @@ TEST(TightenCord, CircleSectionCordsTouchEveryPolygonVertex) {
 
 TEST(TightenCord, FailsWhenTheGuidePiercesTheObject) {
   // Guide from outside straight through a unit square's outline: the ray never rotates.
-  const std::vector<Segment2> square = {{{-1, -1}, {1, -1}}, {{1, -1}, {1, 1}},
-                                        {{1, 1}, {-1, 1}},   {{-1, 1}, {-1, -1}}};
+  const std::vector<Segment2> square = {
+      {{-1, -1}, {1, -1}}, {{1, -1}, {1, 1}}, {{1, 1}, {-1, 1}}, {{-1, 1}, {-1, -1}}};
   const Poly2 points = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
   EXPECT_FALSE(tighten_cord({{-3, 0}, {3, 0}}, points, square).has_value());
   // The same guide displaced above the square is free and stays a straight chord.
@@ -165,8 +167,6 @@ TEST(TightenCord, SampledOracleAgreesWithin1umOn200RandomPlanes) {
   int planes = 0;
   for (const Mesh& mesh : test::test_shapes()) {
     compare_with_oracle(mesh, 45, true, rng, planes);
-
-
   }
   EXPECT_GE(planes, 200);
 }
@@ -174,8 +174,7 @@ TEST(TightenCord, SampledOracleAgreesWithin1umOn200RandomPlanes) {
 TEST(TightenCord, SampledOracleAgreesWithin1umOnShippedObjects) {
   std::mt19937_64 rng(77);
   int planes = 0;
-  for (const std::string& path :
-       test::files_in(test::source_dir() + "/assets/objects", ".obj")) {
+  for (const std::string& path : test::files_in(test::source_dir() + "/assets/objects", ".obj")) {
     const Mesh mesh = load_mesh(path);
     if (!test::is_watertight(mesh)) continue;  // defective.obj: see the dataset test below
     compare_with_oracle(mesh, 25, true, rng, planes);

@@ -1,5 +1,7 @@
 // XOR measure χ (spec §6, Eq. (1)): Clipper area identity, the convex backend, zero for an
 // extrusion, and lower χ for perpendicular than oblique approaches to a long cylinder.
+#include "cordgrasp/core/xor_measure.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -9,7 +11,6 @@
 #include "cord_test_util.h"
 #include "cordgrasp/core/scan_cord_set.h"
 #include "cordgrasp/core/xor_area.h"
-#include "cordgrasp/core/xor_measure.h"
 
 namespace cordgrasp {
 namespace {
@@ -80,7 +81,7 @@ TEST(XorMeasure, IsTheMeanXorAreaOfTheProjectedCordsAgainstTheSeed) {
     return Polyline3{{0.01 + dx, 0, z}, {dx, 0, z}, {dx, 0.01, z}, {0.01 + dx, 0.01, z}};
   };
   const std::vector<Polyline3> cords = {cord(-0.002, -0.003), cord(0, 0), cord(0.002, 0.004)};
-  PlaneFrame seed_plane;  // origin 0, e1 = x, e2 = y
+  PlaneFrame seed_plane;                        // origin 0, e1 = x, e2 = y
   const double shifted_xor = 2 * 0.002 * 0.01;  // two 2 mm × 1 cm strips
   for (XorBackend backend : {XorBackend::kClipper, XorBackend::kConvex}) {
     CordParams params;
@@ -97,8 +98,8 @@ TEST(XorMeasure, ZeroForAnExtrudedPrismScannedAlongItsExtrusion) {
   // can flip a coordinate's 0.1 µm rounding between cords (≈ edge × 0.1 µm ≈ 1e-9 m²).
   constexpr double kZeroConvex_m2 = 1e-12, kZeroClipper_m2 = 1e-8;
   const Eigen::Vector3d p1(-0.2, 0.005, 0.002), p2(0.1, 0.12, 0.002), p3(0.1, -0.11, 0.002);
-  for (const Mesh& prism : {make_box_mesh(Eigen::Vector3d(0.05, 0.04, 0.6)),
-                            make_cylinder_mesh(0.025, 0.6, 48)}) {
+  for (const Mesh& prism :
+       {make_box_mesh(Eigen::Vector3d(0.05, 0.04, 0.6)), make_cylinder_mesh(0.025, 0.6, 48)}) {
     const CordObject object = make_cord_object(prism);
     for (XorBackend backend : {XorBackend::kConvex, XorBackend::kClipper}) {
       CordParams params;
@@ -108,8 +109,7 @@ TEST(XorMeasure, ZeroForAnExtrudedPrismScannedAlongItsExtrusion) {
       ASSERT_TRUE(region.has_value()) << prism.name << " failure " << int(why);
       EXPECT_EQ(region->cord_case, CordCase::kI);
       EXPECT_GE(region->n, 2);
-      EXPECT_LT(region->chi_m2,
-                backend == XorBackend::kConvex ? kZeroConvex_m2 : kZeroClipper_m2)
+      EXPECT_LT(region->chi_m2, backend == XorBackend::kConvex ? kZeroConvex_m2 : kZeroClipper_m2)
           << prism.name << " backend " << int(backend);
     }
   }

@@ -1,6 +1,7 @@
 // Exploration stage benchmarks (issue 3): 20 sets + local improvement, one thread, per shared
-// KIT and YCB object (and the shipped objects), default hand's palm width. Targets: median ≤ 20 ms (KIT), ≤ 100 ms (3000-triangle YCB).
-// Run: build/tools/cordgrasp-microbench --benchmark_filter=Explore
+// KIT and YCB object (and the shipped objects), default hand's palm width. Targets: median ≤ 20 ms
+// (KIT), ≤ 100 ms (3000-triangle YCB). Run: build/tools/cordgrasp-microbench
+// --benchmark_filter=Explore
 //        --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
@@ -21,7 +22,8 @@ namespace fs = std::filesystem;
 
 /// W_palm of the shipped default hand (cordgrasp_sah: 0.0844 m), measured once.
 double default_palm_width_m() {
-  static const double w = cordgrasp::palm_width(cordgrasp::load_hand(cordgrasp::default_hand_name()));
+  static const double w =
+      cordgrasp::palm_width(cordgrasp::load_hand(cordgrasp::default_hand_name()));
   return w;
 }
 /// Cap per exploration: Dex-Net-scaled KIT objects narrower than the palm have no valid set

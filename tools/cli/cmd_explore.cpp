@@ -19,7 +19,7 @@ namespace {
 struct ExploreOptions {
   std::string object;
   std::string units = "m";
-  std::string hand;          // empty: the shipped default hand (unless --palm-width-m)
+  std::string hand;  // empty: the shipped default hand (unless --palm-width-m)
   double palm_width_m = 0.0;
   int sets = 20;
   std::uint64_t seed = 1;
@@ -58,8 +58,7 @@ nlohmann::json region_json(const GraspRegion& r, int rank) {
 
 std::string point_text(const Eigen::Vector3d& p) {
   std::ostringstream s;
-  s << std::fixed << std::setprecision(4) << '(' << p.x() << ", " << p.y() << ", " << p.z()
-    << ')';
+  s << std::fixed << std::setprecision(4) << '(' << p.x() << ", " << p.y() << ", " << p.z() << ')';
   return s.str();
 }
 
@@ -109,10 +108,10 @@ void run_explore(const ExploreOptions& opt) {
       const GraspRegion& r = regions[k];
       std::cout << std::setw(4) << k + 1 << "  " << std::setw(9) << std::setprecision(3)
                 << r.chi_m2 * 1e6 << "  " << std::setw(4)
-                << (r.cord_case == CordCase::kI ? "I" : "II") << "  " << std::setw(2) << r.n
-                << "  " << std::setw(6) << std::setprecision(2) << r.xi_m * 1e3 << "  "
-                << std::left << std::setw(29) << point_text(r.p1) << std::setw(29)
-                << point_text(r.p_l) << std::setw(29) << point_text(r.p_r) << std::right
+                << (r.cord_case == CordCase::kI ? "I" : "II") << "  " << std::setw(2) << r.n << "  "
+                << std::setw(6) << std::setprecision(2) << r.xi_m * 1e3 << "  " << std::left
+                << std::setw(29) << point_text(r.p1) << std::setw(29) << point_text(r.p_l)
+                << std::setw(29) << point_text(r.p_r) << std::right
                 << (r.from_local_improvement ? "yes" : "") << '\n';
     }
     if (shown < regions.size())

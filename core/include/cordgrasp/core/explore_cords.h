@@ -9,18 +9,18 @@ namespace cordgrasp {
 
 /// Counters and timings of one explore_cords() run.
 struct ExplorationStats {
-  long long triangles_sampled = 0;   ///< guide triangles drawn by Algorithm 1
-  long long triangles_acute = 0;     ///< of those, acute
-  long long seed_cords = 0;          ///< acute ones whose seed front cord was built (§3)
-  long long sets_tried = 0;          ///< eligible seeds that were scanned (§3.4, §4)
-  long long sets_valid = 0;          ///< fully scanned sets from sampling
-  long long improvement_tried = 0;   ///< local-improvement perturbations drawn
-  long long improvement_valid = 0;   ///< valid sets they produced
-  int iterations = 0;                ///< outer iterations (reshuffles) started, ≤ M
-  double sampling_time_s = 0.0;      ///< wall clock of Algorithm 1 [s]
-  double improvement_time_s = 0.0;   ///< wall clock of local improvement [s]
-  double time_s = 0.0;               ///< total wall clock, including setup [s]
-  bool hit_time_limit = false;       ///< the time cap stopped the run (result not reproducible)
+  long long triangles_sampled = 0;  ///< guide triangles drawn by Algorithm 1
+  long long triangles_acute = 0;    ///< of those, acute
+  long long seed_cords = 0;         ///< acute ones whose seed front cord was built (§3)
+  long long sets_tried = 0;         ///< eligible seeds that were scanned (§3.4, §4)
+  long long sets_valid = 0;         ///< fully scanned sets from sampling
+  long long improvement_tried = 0;  ///< local-improvement perturbations drawn
+  long long improvement_valid = 0;  ///< valid sets they produced
+  int iterations = 0;               ///< outer iterations (reshuffles) started, ≤ M
+  double sampling_time_s = 0.0;     ///< wall clock of Algorithm 1 [s]
+  double improvement_time_s = 0.0;  ///< wall clock of local improvement [s]
+  double time_s = 0.0;              ///< total wall clock, including setup [s]
+  bool hit_time_limit = false;      ///< the time cap stopped the run (result not reproducible)
 };
 
 /// Exploration stage (spec §5): Algorithm 1 samples guide triangles (P1 on s1, P2, P3 on s2,

@@ -16,9 +16,7 @@ struct PlaneFrame {
     return {e1.dot(d), e2.dot(d)};
   }
   /// 3D point of in-plane coordinates [m].
-  Eigen::Vector3d to_3d(const Eigen::Vector2d& q) const {
-    return origin + q.x() * e1 + q.y() * e2;
-  }
+  Eigen::Vector3d to_3d(const Eigen::Vector2d& q) const { return origin + q.x() * e1 + q.y() * e2; }
 };
 
 /// Frame of guide triangle T = (P1, P2, P3) (spec §1): origin P1, e1 = unit(P2−P1),

@@ -10,8 +10,8 @@ namespace cordgrasp {
 /// to cast segments against it (spec §2.3). Holds its own copy of the geometry.
 struct MeshBvh {
   struct Node {
-    Eigen::Vector3d lo = Eigen::Vector3d::Zero();  ///< box min [m]
-    Eigen::Vector3d hi = Eigen::Vector3d::Zero();  ///< box max [m]
+    Eigen::Vector3d lo = Eigen::Vector3d::Zero();      ///< box min [m]
+    Eigen::Vector3d hi = Eigen::Vector3d::Zero();      ///< box max [m]
     Eigen::Vector3d center = Eigen::Vector3d::Zero();  ///< (lo + hi) / 2 [m]
     Eigen::Vector3d half = Eigen::Vector3d::Zero();    ///< (hi − lo) / 2 [m]
     double radius = 0.0;                               ///< ‖half‖: bounding-sphere radius [m]

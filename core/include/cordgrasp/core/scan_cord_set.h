@@ -18,9 +18,8 @@ enum class ScanFailure {
 
 /// Number of cords per side n = max(1, round(W_palm / (2θd))) with d the radius at which
 /// segment P2P3 moves (spec §4.2), capped at params.max_cords_per_side.
-int cords_per_side(const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
-                   const Eigen::Vector3d& p3, const Eigen::Vector3d& p_m, double palm_width_m,
-                   const CordParams& params = {});
+int cords_per_side(const Eigen::Vector3d& p1, const Eigen::Vector3d& p2, const Eigen::Vector3d& p3,
+                   const Eigen::Vector3d& p_m, double palm_width_m, const CordParams& params = {});
 
 /// A full set for seed guide triangle T0 = (P1, P2, P3) (spec §3–§6): eligible seed front cord,
 /// the 2n rotated guide triangles Rot(P1, a, ±iθ)·T0 with a = unit(ν × (P_m − P1)), each in

@@ -16,7 +16,7 @@ struct SegmentHit {
 
 /// Options of Primitive B (spec §2.3).
 struct SegmentHitOptions {
-  double merge_m = 1e-9;      ///< hits closer than this along the segment are merged [m]
+  double merge_m = 1e-9;          ///< hits closer than this along the segment are merged [m]
   double ignore_near_p0_m = 0.0;  ///< drop hits within this distance of p0 (ε_self = 1e-7 for
                                   ///< an on-surface origin) [m]
 };

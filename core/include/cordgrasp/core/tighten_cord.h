@@ -21,8 +21,9 @@ struct TightenOptions {
 /// moving along the guide; the first point swept joins the cord. `segments` (S) are only
 /// used to FAIL when the ray does not rotate and the guide pierces the object.
 /// Returns the cord from g0 to gm, or nullopt on FAIL (pierced guide, > 4|V|+8 points).
-std::optional<std::vector<Eigen::Vector2d>> tighten_cord(
-    const std::vector<Eigen::Vector2d>& guide, const std::vector<Eigen::Vector2d>& points,
-    const std::vector<Segment2>& segments, const TightenOptions& options = {});
+std::optional<std::vector<Eigen::Vector2d>> tighten_cord(const std::vector<Eigen::Vector2d>& guide,
+                                                         const std::vector<Eigen::Vector2d>& points,
+                                                         const std::vector<Segment2>& segments,
+                                                         const TightenOptions& options = {});
 
 }  // namespace cordgrasp
