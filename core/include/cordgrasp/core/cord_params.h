@@ -36,7 +36,7 @@ struct CordParams {
   double barycentric_tol = 1e-12;  ///< closed-triangle test: barycentric ≥ −tol (spec §2.4) [1]
   double dedup_m = 1e-7;           ///< cord points closer than this are merged (spec §2.4) [m]
   double min_grasp_gap_m = 1e-3;   ///< FAIL when ‖P_l − P_r‖ is below this (spec §2.6) [m]
-  CordConstruction cord_construction = CordConstruction::kHullChain;
+  CordConstruction cord_construction = CordConstruction::kHullChain;  ///< see CordConstruction
 
   // §3.4 eligibility of the seed cord
   double xi_min_m = 0.015;                             ///< ξ_min [m]
