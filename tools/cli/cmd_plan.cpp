@@ -142,6 +142,13 @@ void run_plan(const PlanOptions& opt) {
                     {"soft_finger_radius_m", opt.soft_finger_radius_m},
                     {"quality", opt.quality},
                     {"cone_edges", params.quality.contact.cone_edges},
+                    {"min_epsilon", params.quality.min_epsilon},
+                    {"simox",
+                     {{"mu_eff", params.quality.simox_mu_eff},
+                      {"fc_tolerance", params.quality.simox_fc_tolerance},
+                      {"ows_faces", params.quality.simox_ows_faces}}},
+                    {"roll_retry", params.roll_retry},
+                    {"max_attempts", params.max_attempts},
                     {"finger", finger_params_json(params.finger)}};
 
   PlanResult result;
