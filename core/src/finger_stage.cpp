@@ -23,8 +23,8 @@ std::vector<std::vector<int>> child_joints(const HandModel& hand) {
   return out;
 }
 
-void collect_subtree(const HandModel& hand, const std::vector<std::vector<int>>& children,
-                     int link, std::vector<char>& in) {
+void collect_subtree(const HandModel& hand, const std::vector<std::vector<int>>& children, int link,
+                     std::vector<char>& in) {
   in[static_cast<size_t>(link)] = 1;
   for (int j : children[static_cast<size_t>(link)])
     collect_subtree(hand, children, hand.joints[static_cast<size_t>(j)].child_link, in);
@@ -93,10 +93,14 @@ Eigen::VectorXd coupled(const HandModel& hand, const Eigen::VectorXd& q) {
 
 const char* to_string(FingerStatus status) {
   switch (status) {
-    case FingerStatus::kOk: return "ok";
-    case FingerStatus::kNoContact: return "no_contact";
-    case FingerStatus::kOneContact: return "one_contact";
-    case FingerStatus::kCannotRetreat: return "cannot_retreat";
+    case FingerStatus::kOk:
+      return "ok";
+    case FingerStatus::kNoContact:
+      return "no_contact";
+    case FingerStatus::kOneContact:
+      return "one_contact";
+    case FingerStatus::kCannotRetreat:
+      return "cannot_retreat";
   }
   return "unknown";
 }
@@ -355,9 +359,9 @@ void close_fingers(const HandModel& hand, const HandSetup& setup, HandObjectColl
     }
   }
   const int count = static_cast<int>(result.contacts.size());
-  result.status = count == 0                      ? FingerStatus::kNoContact
-                  : count < params.min_contacts   ? FingerStatus::kOneContact
-                                                  : FingerStatus::kOk;
+  result.status = count == 0                    ? FingerStatus::kNoContact
+                  : count < params.min_contacts ? FingerStatus::kOneContact
+                                                : FingerStatus::kOk;
 }
 
 FingerResult run_finger_stage(const HandModel& hand, const HandSetup& setup,

@@ -4,7 +4,7 @@
 #include <random>
 
 #include "cordgrasp/core/mesh_properties.h"
-#include "mesh_ray_internal.h"
+#include "cordgrasp/core/segment_mesh_hits.h"
 #include "plan_internal.h"
 
 namespace cordgrasp {
@@ -19,7 +19,7 @@ Eigen::Vector3d outward_face_normal(const Mesh& mesh, int tri, const Eigen::Vect
   const double reach = 2.0 * bounding_radius(mesh, c) + (p_O - c).norm() + 1.0;
   // Start just off the surface so the ray does not count its own triangle.
   const double lift = 1e-7 * reach;
-  const auto hits = internal::segment_hit_params(mesh, p_O + lift * n, p_O + reach * n);
+  const auto hits = segment_mesh_hits(mesh, p_O + lift * n, p_O + reach * n);  // spec §2.3
   return hits.size() % 2 == 1 ? Eigen::Vector3d(-n) : n;
 }
 
@@ -58,7 +58,8 @@ PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
       u = 1.0 - u;
       v = 1.0 - v;
     }
-    const Eigen::Vector3d p = mesh.vertices[t[0]] + u * (mesh.vertices[t[1]] - mesh.vertices[t[0]]) +
+    const Eigen::Vector3d p = mesh.vertices[t[0]] +
+                              u * (mesh.vertices[t[1]] - mesh.vertices[t[0]]) +
                               v * (mesh.vertices[t[2]] - mesh.vertices[t[0]]);
     const Eigen::Vector3d z = -outward_face_normal(mesh, tri, p);
     const double roll = 2.0 * M_PI * unit(rng);

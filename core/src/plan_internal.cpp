@@ -5,9 +5,8 @@
 
 namespace cordgrasp::internal {
 
-PlanContext make_plan_context(const Mesh& mesh, const HandModel& hand,
-                              HandObjectCollider& collider, const PlanParams& params,
-                              PlanStats& stats) {
+PlanContext make_plan_context(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
+                              const PlanParams& params, PlanStats& stats) {
   const auto start = std::chrono::steady_clock::now();
   PlanContext ctx;
   ctx.setup = prepare_hand(hand, collider);
@@ -22,15 +21,22 @@ bool attempt_grasp(const HandModel& hand, HandObjectCollider& collider, const Pl
                    double approach_travel_m, PlanStats& stats, Grasp& grasp) {
   ++stats.attempts;
   const auto t_finger = std::chrono::steady_clock::now();
-  const FingerResult fr = run_finger_stage(hand, ctx.setup, collider, X_OG_start,
-                                           approach_travel_m, params.finger);
+  const FingerResult fr =
+      run_finger_stage(hand, ctx.setup, collider, X_OG_start, approach_travel_m, params.finger);
   const double finger_s = seconds_since(t_finger);
   stats.finger_s += finger_s;
   switch (fr.status) {
-    case FingerStatus::kOk: break;
-    case FingerStatus::kNoContact: ++stats.no_contact; return false;
-    case FingerStatus::kOneContact: ++stats.one_contact; return false;
-    case FingerStatus::kCannotRetreat: ++stats.cannot_retreat; return false;
+    case FingerStatus::kOk:
+      break;
+    case FingerStatus::kNoContact:
+      ++stats.no_contact;
+      return false;
+    case FingerStatus::kOneContact:
+      ++stats.one_contact;
+      return false;
+    case FingerStatus::kCannotRetreat:
+      ++stats.cannot_retreat;
+      return false;
   }
   const auto t_quality = std::chrono::steady_clock::now();
   const GraspQuality quality =

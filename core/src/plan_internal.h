@@ -20,9 +20,8 @@ struct PlanContext {
 };
 
 /// Builds the PlanContext (timed into stats.setup_s).
-PlanContext make_plan_context(const Mesh& mesh, const HandModel& hand,
-                              HandObjectCollider& collider, const PlanParams& params,
-                              PlanStats& stats);
+PlanContext make_plan_context(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
+                              const PlanParams& params, PlanStats& stats);
 
 /// Runs the finger stage from X_OG_start, then the quality check; counts the outcome in
 /// `stats`. Returns true and fills `grasp` when the grasp is force-closure.

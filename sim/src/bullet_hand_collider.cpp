@@ -5,7 +5,6 @@
 #include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
 #include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
 #include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
-
 #include <LinearMath/btConvexHullComputer.h>
 
 #include <algorithm>
@@ -25,8 +24,8 @@ using bullet::to_bt;
 struct Aabb3 {
   btVector3 lo, hi;
   bool overlaps(const Aabb3& o) const {
-    return lo.x() <= o.hi.x() && o.lo.x() <= hi.x() && lo.y() <= o.hi.y() &&
-           o.lo.y() <= hi.y() && lo.z() <= o.hi.z() && o.lo.z() <= hi.z();
+    return lo.x() <= o.hi.x() && o.lo.x() <= hi.x() && lo.y() <= o.hi.y() && o.lo.y() <= hi.y() &&
+           lo.z() <= o.hi.z() && o.lo.z() <= hi.z();
   }
 };
 
@@ -61,8 +60,8 @@ ConvexCuller make_culler(const btConvexShape& shape) {
       coords.insert(coords.end(), {p.x(), p.y(), p.z()});
     }
     btConvexHullComputer hull;
-    hull.compute(coords.data(), 3 * static_cast<int>(sizeof(double)),
-                 hull_shape.getNumPoints(), 0.0, 0.0);
+    hull.compute(coords.data(), 3 * static_cast<int>(sizeof(double)), hull_shape.getNumPoints(),
+                 0.0, 0.0);
     btVector3 centroid(0, 0, 0);
     for (int i = 0; i < hull.vertices.size(); ++i) centroid += hull.vertices[i];
     if (hull.vertices.size() > 0) centroid /= hull.vertices.size();
@@ -337,6 +336,7 @@ class BulletHandCollider final : public HandObjectCollider {
     object_cert_.assign(links_.size(), Certificate{});
     pair_cert_.assign(links_.size() * links_.size(), Certificate{});
     pair_axis_.assign(links_.size() * links_.size(), btVector3(0, 0, 0));
+    pair_rel_.assign(links_.size() * links_.size(), RelativeCertificate{});
     child_aabb_.resize(links_.size());
     link_aabb_.resize(links_.size());
     for (size_t i = 0; i < links_.size(); ++i) update_aabbs(static_cast<int>(i));
@@ -379,7 +379,7 @@ class BulletHandCollider final : public HandObjectCollider {
       }
       clearance = std::min(clearance, q.best().m_distance);
     }
-    cert = Certificate{clearance, motion_[link]};
+    if (clearance > kMinClearance_m) cert = Certificate{clearance, motion_[link]};
     return false;
   }
 
@@ -390,6 +390,10 @@ class BulletHandCollider final : public HandObjectCollider {
     Certificate& cert = pair_cert_[pair_index(a, b)];
     const double motion = motion_[a] + motion_[b];
     if (cert.holds(motion)) return false;
+    // Fingers closing side by side move together: bound b's motion relative to a as well.
+    const btTransform X_ab = X_OL_[a].inverse() * X_OL_[b];
+    RelativeCertificate& rel = pair_rel_[pair_index(a, b)];
+    if (rel.clearance > 0.0 && displacement_bound(b, rel.X_ab, X_ab) < rel.clearance) return false;
     double clearance = std::numeric_limits<double>::infinity();
     for (size_t i = 0; i < sa.children.size(); ++i) {
       for (size_t j = 0; j < sb.children.size(); ++j) {
@@ -409,12 +413,16 @@ class BulletHandCollider final : public HandObjectCollider {
         if (!result.m_hasResult) continue;
         if (result.m_distance < 0.0) {
           cert = Certificate{};
+          rel = RelativeCertificate{};
           return true;
         }
         clearance = std::min(clearance, result.m_distance);
       }
     }
-    if (std::isfinite(clearance)) cert = Certificate{clearance, motion};
+    if (std::isfinite(clearance) && clearance > kMinClearance_m) {
+      cert = Certificate{clearance, motion};
+      rel = RelativeCertificate{clearance, X_ab};
+    }
     return false;
   }
 
@@ -475,8 +483,19 @@ class BulletHandCollider final : public HandObjectCollider {
   struct Certificate {
     double clearance = -1.0;  // < 0: none
     double motion = 0.0;
-    bool holds(double motion_now) const { return motion_now - motion < clearance; }
+    bool holds(double motion_now) const {
+      return clearance > 0.0 && motion_now - motion < clearance;
+    }
   };
+
+  // Clearance between two links certified at relative pose X_ab (b in a's frame).
+  struct RelativeCertificate {
+    double clearance = -1.0;  // < 0: none
+    btTransform X_ab = btTransform::getIdentity();
+  };
+
+  // Touching pairs are not certified: their verdict is at the mercy of rounding [m].
+  static constexpr double kMinClearance_m = 1e-9;
 
   // Certify link–object clearance up to this distance in boolean queries [m].
   static constexpr double kCertifyDistance_m = 5e-3;
@@ -487,8 +506,7 @@ class BulletHandCollider final : public HandObjectCollider {
     const LinkShape& s = links_[static_cast<size_t>(link)];
     if (!s.compound) return 0.0;
     const btMatrix3x3 dR = X_new.getBasis() * X_old.getBasis().transpose();
-    const double cos_angle =
-        std::clamp(0.5 * (dR[0][0] + dR[1][1] + dR[2][2] - 1.0), -1.0, 1.0);
+    const double cos_angle = std::clamp(0.5 * (dR[0][0] + dR[1][1] + dR[2][2] - 1.0), -1.0, 1.0);
     const double chord = std::sqrt(2.0 * (1.0 - cos_angle));  // 2 sin(angle/2)
     double bound = 0.0;
     for (size_t c = 0; c < s.children.size(); ++c) {
@@ -533,18 +551,20 @@ class BulletHandCollider final : public HandObjectCollider {
   std::vector<LinkShape> links_;
   std::vector<std::vector<ConvexCuller>> cullers_;
   std::vector<btTransform> X_OL_;
-  std::vector<double> motion_;              // accumulated displacement bound per link [m]
-  std::vector<Certificate> object_cert_;    // per link
-  std::vector<Certificate> pair_cert_;      // per ordered link pair (a·n + b)
-  std::vector<btVector3> pair_axis_;        // last GJK separating axis per pair
+  std::vector<double> motion_;                 // accumulated displacement bound per link [m]
+  std::vector<Certificate> object_cert_;       // per link
+  std::vector<Certificate> pair_cert_;         // per ordered link pair (a·n + b)
+  std::vector<btVector3> pair_axis_;           // last GJK separating axis per pair
+  std::vector<RelativeCertificate> pair_rel_;  // per ordered link pair
   std::vector<std::vector<Aabb3>> child_aabb_;
   std::vector<Aabb3> link_aabb_;
 };
 
 }  // namespace
 
-std::unique_ptr<HandObjectCollider> make_bullet_hand_collider(
-    const HandModel& hand, const Mesh& object, const BulletColliderParams& params) {
+std::unique_ptr<HandObjectCollider> make_bullet_hand_collider(const HandModel& hand,
+                                                              const Mesh& object,
+                                                              const BulletColliderParams& params) {
   return std::make_unique<BulletHandCollider>(hand, object, params);
 }
 

@@ -9,8 +9,8 @@ namespace cordgrasp::bullet {
 
 btTransform to_bt(const Eigen::Isometry3d& X) {
   const Eigen::Matrix3d R = X.linear();
-  const btMatrix3x3 basis(R(0, 0), R(0, 1), R(0, 2), R(1, 0), R(1, 1), R(1, 2), R(2, 0),
-                          R(2, 1), R(2, 2));
+  const btMatrix3x3 basis(R(0, 0), R(0, 1), R(0, 2), R(1, 0), R(1, 1), R(1, 2), R(2, 0), R(2, 1),
+                          R(2, 2));
   return btTransform(basis, to_bt(Eigen::Vector3d(X.translation())));
 }
 
@@ -109,8 +109,8 @@ std::unique_ptr<btConvexShape> make_geometry_shape(const Geometry& g, const Shap
     }
     case Geometry::Kind::kCylinder: {
       if (g.radius_m <= 0.0 || g.length_m <= 0.0) return nullptr;
-      shape = std::make_unique<btCylinderShapeZ>(
-          btVector3(g.radius_m, g.radius_m, 0.5 * g.length_m));
+      shape =
+          std::make_unique<btCylinderShapeZ>(btVector3(g.radius_m, g.radius_m, 0.5 * g.length_m));
       shape->setMargin(std::min(m, 0.5 * std::min(g.radius_m, 0.5 * g.length_m)));
       break;
     }
@@ -157,7 +157,8 @@ std::unique_ptr<ObjectMeshShape> make_object_mesh_shape(const Mesh& mesh,
                                                         const ShapeParams& params) {
   auto out = std::make_unique<ObjectMeshShape>();
   out->vertices.reserve(mesh.vertices.size() * 3);
-  for (const auto& v : mesh.vertices) out->vertices.insert(out->vertices.end(), {v.x(), v.y(), v.z()});
+  for (const auto& v : mesh.vertices)
+    out->vertices.insert(out->vertices.end(), {v.x(), v.y(), v.z()});
   for (const Eigen::Vector3i& t : mesh.triangles) {
     const Eigen::Vector3d& a = mesh.vertices[t[0]];
     const Eigen::Vector3d& b = mesh.vertices[t[1]];

@@ -1,7 +1,8 @@
 // Finger stage (spec §7) with hands built from primitives and the Bullet collider.
+#include "cordgrasp/core/finger_stage.h"
+
 #include <gtest/gtest.h>
 
-#include "cordgrasp/core/finger_stage.h"
 #include "cordgrasp/core/grasp_quality.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
@@ -15,7 +16,8 @@ namespace {
 constexpr double kContactTol_m = 0.5e-3;  // spec: contacts within 0.5 mm of the surface
 constexpr double kPosTol_m = 1e-6;
 
-Eigen::Isometry3d at(const Eigen::Vector3d& p, const Eigen::Matrix3d& R = Eigen::Matrix3d::Identity()) {
+Eigen::Isometry3d at(const Eigen::Vector3d& p,
+                     const Eigen::Matrix3d& R = Eigen::Matrix3d::Identity()) {
   Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
   X.linear() = R;
   X.translation() = p;

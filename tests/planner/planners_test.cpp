@@ -103,8 +103,7 @@ TEST(OutwardFaceNormal, FlipsInwardWoundTrianglesByRayParity) {
     std::swap(box.triangles[i][1], box.triangles[i][2]);  // half the faces wound inwards
   for (size_t i = 0; i < box.triangles.size(); ++i) {
     const Eigen::Vector3i& t = box.triangles[i];
-    const Eigen::Vector3d p =
-        (box.vertices[t[0]] + box.vertices[t[1]] + box.vertices[t[2]]) / 3.0;
+    const Eigen::Vector3d p = (box.vertices[t[0]] + box.vertices[t[1]] + box.vertices[t[2]]) / 3.0;
     const Eigen::Vector3d n = outward_face_normal(box, static_cast<int>(i), p);
     EXPECT_GT(n.dot(p), 0.0) << "face " << i;  // box centred at the origin
   }

@@ -82,17 +82,15 @@ inline HandModel make_three_finger_hand(bool coupled = true) {
     const double th = 2.0 * M_PI * f / 3.0;
     const Eigen::Vector3d axis(std::sin(th), -std::cos(th), 0.0);  // positive angle curls in
     const std::string name = "finger" + std::to_string(f);
-    const int l1 = add_link(h, name + "_proximal",
-                            box_geometry({0.015, 0.015, 0.05}, {0, 0, 0.025}));
-    const int l2 = add_link(h, name + "_distal",
-                            box_geometry({0.015, 0.015, 0.04}, {0, 0, 0.02}));
+    const int l1 =
+        add_link(h, name + "_proximal", box_geometry({0.015, 0.015, 0.05}, {0, 0, 0.025}));
+    const int l2 = add_link(h, name + "_distal", box_geometry({0.015, 0.015, 0.04}, {0, 0, 0.02}));
     Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
     X.translation() = Eigen::Vector3d(0.05 * std::cos(th), 0.05 * std::sin(th), 0.0);
-    const int j1 = add_joint(h, name + "_joint1", JointType::kRevolute, palm, l1, X, axis, 0.0,
-                             1.6);
+    const int j1 =
+        add_joint(h, name + "_joint1", JointType::kRevolute, palm, l1, X, axis, 0.0, 1.6);
     X.translation() = Eigen::Vector3d(0, 0, 0.052);
-    const int j2 = add_joint(h, name + "_joint2", JointType::kRevolute, l1, l2, X, axis, 0.0,
-                             1.6);
+    const int j2 = add_joint(h, name + "_joint2", JointType::kRevolute, l1, l2, X, axis, 0.0, 1.6);
     Actor actor{name, {{j1, 1.0}}};
     if (coupled)
       h.joints[static_cast<size_t>(j2)].mimic = Mimic{j1, 1.0, 0.0};

@@ -1,11 +1,12 @@
 // Skewness α (spec §9).
+#include "cordgrasp/core/skewness.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/shapes.h"
-#include "cordgrasp/core/skewness.h"
 
 namespace cordgrasp {
 namespace {

@@ -101,10 +101,9 @@ nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand) {
   for (const Grasp& g : plan.grasps) {
     nlohmann::json contacts = nlohmann::json::array();
     for (const Contact& c : g.contacts) {
-      const std::string link =
-          c.link >= 0 && c.link < static_cast<int>(hand.links.size())
-              ? hand.links[static_cast<size_t>(c.link)].name
-              : std::string();
+      const std::string link = c.link >= 0 && c.link < static_cast<int>(hand.links.size())
+                                   ? hand.links[static_cast<size_t>(c.link)].name
+                                   : std::string();
       contacts.push_back({{"link", link}, {"point_m", to_json(c.p_O)}, {"normal", to_json(c.n_O)}});
     }
     grasps.push_back(
@@ -127,10 +126,13 @@ nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand) {
           {"format_version", kFormatVersion},
           {"cordgrasp_version", plan.cordgrasp_version},
           {"inputs",
-           {{"hand", {{"name", plan.hand_name}, {"path", plan.hand_path},
-                      {"urdf_path", plan.urdf_path}}},
-            {"object", {{"path", plan.object_path}, {"name", plan.object_name},
-                        {"units", plan.object_units}, {"triangles", plan.object_triangles}}}}},
+           {{"hand",
+             {{"name", plan.hand_name}, {"path", plan.hand_path}, {"urdf_path", plan.urdf_path}}},
+            {"object",
+             {{"path", plan.object_path},
+              {"name", plan.object_name},
+              {"units", plan.object_units},
+              {"triangles", plan.object_triangles}}}}},
           {"parameters", plan.parameters},
           {"stats", stats_json(plan.stats)},
           {"grasps", grasps}};
@@ -150,8 +152,7 @@ nlohmann::json read_plan_json(const std::string& path) {
     throw InputError("read_plan: '" + path + "': not valid JSON (" + e.what() + ")");
   }
   if (!j.is_object() || j.value("format", std::string()) != kFormat)
-    throw InputError("read_plan: '" + path + "': not a cordgrasp plan (format != " + kFormat +
-                     ")");
+    throw InputError("read_plan: '" + path + "': not a cordgrasp plan (format != " + kFormat + ")");
   if (j.value("format_version", 0) != kFormatVersion)
     throw InputError("read_plan: '" + path + "': unsupported format_version " +
                      j.value("format_version", nlohmann::json(nullptr)).dump());
@@ -189,8 +190,8 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand) {
       grasp.X_OB = pose_from_json(g.at("hand_pose"));
       grasp.X_OG = pose_from_json(g.at("gcp_pose"));
       grasp.q = joints_from_json(hand, g.at("joints"), "joints");
-      grasp.q_preshape = joints_from_json(hand, g.value("preshape_joints", nlohmann::json::object()),
-                                          "preshape_joints");
+      grasp.q_preshape = joints_from_json(
+          hand, g.value("preshape_joints", nlohmann::json::object()), "preshape_joints");
       for (const auto& c : g.at("contacts")) {
         Contact contact;
         const std::string link = c.at("link").get<std::string>();

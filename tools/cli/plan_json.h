@@ -29,14 +29,14 @@ namespace cordgrasp::cli {
 /// Everything plan.json holds besides the grasps' raw joint vectors.
 struct PlanDocument {
   std::string cordgrasp_version;
-  std::string hand_name;       ///< HandModel::name
-  std::string hand_path;       ///< absolute path of the hand description file
-  std::string urdf_path;       ///< absolute path of its URDF
-  std::string object_path;     ///< absolute path of the object mesh
+  std::string hand_name;    ///< HandModel::name
+  std::string hand_path;    ///< absolute path of the hand description file
+  std::string urdf_path;    ///< absolute path of its URDF
+  std::string object_path;  ///< absolute path of the object mesh
   std::string object_name;
   std::string object_units = "m";  ///< as given to --units (m, mm or auto)
   int object_triangles = 0;
-  std::string planner = "cord";    ///< cord or generic
+  std::string planner = "cord";                          ///< cord or generic
   nlohmann::json parameters = nlohmann::json::object();  ///< every parameter, as written
   PlanStats stats;
   std::vector<Grasp> grasps;

@@ -13,17 +13,17 @@ namespace cordgrasp {
 
 /// Parameters of the finger stage (spec §7).
 struct FingerParams {
-  double approach_step_m = 1e-3;   ///< approach step along GCP +z (§7.2)
-  double retreat_step_m = 1e-3;    ///< retreat step along GCP −z (§7.3)
-  int max_retreat_steps = 1000;    ///< give up (hand cannot get free) after this many (§7.3)
+  double approach_step_m = 1e-3;  ///< approach step along GCP +z (§7.2)
+  double retreat_step_m = 1e-3;   ///< retreat step along GCP −z (§7.3)
+  int max_retreat_steps = 1000;   ///< give up (hand cannot get free) after this many (§7.3)
   /// Closing step per iteration (§7.4): each actor joint moves by close_step × its signed
   /// speed (Simox directionAndSpeed), in the joint's units (rad, or m for prismatic joints,
   /// whose descriptions scale the speed accordingly, e.g. −0.1 → 2 mm).
   double close_step = 0.02;
   double contact_tolerance_m = 0.5e-3;  ///< bisection near contact stops this close to the
                                         ///< surface; links this close are contacts
-  int max_close_iterations = 2000;  ///< safety cap on closing iterations
-  int min_contacts = 2;             ///< fewer contacts → rejected (§7.4.5)
+  int max_close_iterations = 2000;      ///< safety cap on closing iterations
+  int min_contacts = 2;                 ///< fewer contacts → rejected (§7.4.5)
 };
 
 /// How one finger-stage attempt ended.
@@ -75,8 +75,8 @@ struct FingerResult {
   FingerStatus status = FingerStatus::kNoContact;
   Eigen::Isometry3d X_OG = Eigen::Isometry3d::Identity();  ///< GCP after approach/retreat
   Eigen::Isometry3d X_OB = Eigen::Isometry3d::Identity();  ///< hand root after approach/retreat
-  Eigen::VectorXd q_preshape;  ///< joints before closing
-  Eigen::VectorXd q;           ///< joints after closing
+  Eigen::VectorXd q_preshape;                              ///< joints before closing
+  Eigen::VectorXd q;                                       ///< joints after closing
   std::vector<Contact> contacts;  ///< one per actor link within contact_tolerance_m
   int approach_steps = 0;
   int retreat_steps = 0;

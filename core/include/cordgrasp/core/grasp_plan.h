@@ -11,13 +11,13 @@ namespace cordgrasp {
 
 /// Parameters shared by the cord and the generic planner.
 struct PlanParams {
-  int grasps = 1;               ///< stop after this many force-closure grasps
-  double time_limit_s = 10.0;   ///< wall-clock cap of the whole plan, exploration included [s]
-  std::uint64_t seed = 1;       ///< generic planner sampling (the cord planner's is CordParams')
-  FingerParams finger;          ///< finger stage (spec §7)
-  QualityParams quality;        ///< force closure and ε (spec §8)
-  bool roll_retry = true;       ///< cord: retry a failed region rolled 180° about z (§7.1)
-  int max_attempts = 1000000;   ///< generic: cap on attempts besides the time limit
+  int grasps = 1;              ///< stop after this many force-closure grasps
+  double time_limit_s = 10.0;  ///< wall-clock cap of the whole plan, exploration included [s]
+  std::uint64_t seed = 1;      ///< generic planner sampling (the cord planner's is CordParams')
+  FingerParams finger;         ///< finger stage (spec §7)
+  QualityParams quality;       ///< force closure and ε (spec §8)
+  bool roll_retry = true;      ///< cord: retry a failed region rolled 180° about z (§7.1)
+  int max_attempts = 1000000;  ///< generic: cap on attempts besides the time limit
 };
 
 /// What a plan did, for reports and benchmarks. Times are wall-clock [s].
@@ -36,7 +36,7 @@ struct PlanStats {
   double quality_s = 0.0;      ///< all wrench-space evaluations
   double total_s = 0.0;        ///< the whole plan
   std::optional<double> first_force_closure_s;  ///< plan start → first FC grasp
-  bool timed_out = false;      ///< stopped by time_limit_s before finding `grasps` grasps
+  bool timed_out = false;  ///< stopped by time_limit_s before finding `grasps` grasps
 };
 
 /// Planned grasps (force-closure ones, in the order found) and statistics.

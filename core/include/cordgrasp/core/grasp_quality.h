@@ -12,7 +12,8 @@ namespace cordgrasp {
 
 /// How force closure and ε are computed (spec §8).
 enum class QualityMode {
-  kTextbook,  ///< real μ; FC iff the origin is strictly inside the hull; ε = origin→hull distance
+  kTextbook,  ///< real μ; FC iff the origin is inside the hull by more than min_epsilon;
+              ///< ε = origin→hull distance
   kSimox,     ///< Simox compat: μ_eff = 1 (45° cones), FC tolerance 1e-4, ε = GWS/OWS ratio of
               ///< facet distances from the hull's vertex centroid
 };
@@ -25,12 +26,16 @@ QualityMode quality_mode_from_string(const std::string& text);
 
 /// Parameters of the grasp wrench space (spec §8).
 struct QualityParams {
-  ContactModel contact;                      ///< μ (textbook mode) and cone edges
+  ContactModel contact;  ///< μ (textbook mode) and cone edges
+  /// Textbook mode: force closure needs ε above this. Grasps whose contacts leave the origin on
+  /// the hull's boundary (e.g. two collinear opposed contacts plus one) come out of the joggled
+  /// hull with ε ~ 1e-11; they are not force closure.
+  double min_epsilon = 1e-8;
   QualityMode mode = QualityMode::kTextbook;
-  double simox_mu_eff = 1.0;                 ///< cone slope Simox really uses (45° half-angle)
-  double simox_fc_tolerance = 1e-4;          ///< Simox accepts max facet offset ≤ this as FC
-  int simox_ows_faces = 300;                 ///< faces sampled for the object wrench space
-  std::uint64_t seed = 1;                    ///< seeds the OWS face sampling (simox mode)
+  double simox_mu_eff = 1.0;         ///< cone slope Simox really uses (45° half-angle)
+  double simox_fc_tolerance = 1e-4;  ///< Simox accepts max facet offset ≤ this as FC
+  int simox_ows_faces = 300;         ///< faces sampled for the object wrench space
+  std::uint64_t seed = 1;            ///< seeds the OWS face sampling (simox mode)
 };
 
 /// 6D wrench (force; λ·torque).
@@ -39,8 +44,8 @@ using Wrench = Eigen::Matrix<double, 6, 1>;
 /// Object-dependent constants of the wrench space, computed once per object (spec §8).
 struct WrenchSpaceObject {
   Eigen::Vector3d center_O = Eigen::Vector3d::Zero();  ///< torque reference c: vertex mean [m]
-  double torque_scale_per_m = 1.0;  ///< λ = 2/L, L = longest AABB side [1/m]
-  double ows_min_offset = 0.0;      ///< simox mode: OWS min facet distance from its centroid
+  double torque_scale_per_m = 1.0;                     ///< λ = 2/L, L = longest AABB side [1/m]
+  double ows_min_offset = 0.0;  ///< simox mode: OWS min facet distance from its centroid
 };
 
 /// Computes c, λ and (simox mode) the OWS of 300 seeded random faces (spec §8).
@@ -53,13 +58,12 @@ WrenchSpaceObject prepare_wrench_space(const Mesh& mesh, const QualityParams& pa
 /// (torsional friction of a soft finger).
 std::vector<Wrench> contact_wrenches(const Eigen::Vector3d& p_O, const Eigen::Vector3d& n_O,
                                      double mu, int edges, const Eigen::Vector3d& center_O,
-                                     double torque_scale_per_m,
-                                     double soft_finger_radius_m = 0.0);
+                                     double torque_scale_per_m, double soft_finger_radius_m = 0.0);
 
 /// Convex hull of 6D wrenches via Qhull ("QJ"), as signed facet offsets (spec §8).
 struct WrenchHull {
-  bool valid = false;           ///< false: < 7 affinely independent points or Qhull failed
-  double max_offset = 0.0;      ///< max_f b_f: the origin is inside iff < 0
+  bool valid = false;                  ///< false: < 7 affinely independent points or Qhull failed
+  double max_offset = 0.0;             ///< max_f b_f: the origin is inside iff < 0
   double min_origin_distance = 0.0;    ///< min_f (−b_f): origin to the nearest facet plane
   double min_centroid_distance = 0.0;  ///< min_f distance from the hull's vertex centroid
   int facets = 0;
