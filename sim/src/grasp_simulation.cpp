@@ -204,6 +204,7 @@ GraspSimulation::Impl::Impl(const Mesh& mesh, const HandModel& h, const Grasp& g
   hp.gear_erp = params.gear_erp;
   hp.base_mass_scale = params.base_mass_scale;
   hp.armature_kgm2 = params.armature_kgm2;
+  hp.polyhedral_contacts = params.polyhedral_contacts;
   hp.armature_kg = params.armature_kg;
   if (params.lock_passive_joints) {
     // Joints no actor drives (abduction, opposition) stay at their planned values, as in the

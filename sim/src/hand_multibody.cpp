@@ -213,6 +213,10 @@ std::unique_ptr<HandMultiBody> make_hand_multibody(const HandModel& hand,
     out->shapes[static_cast<size_t>(b)] = make_links_shape(links, X_CLs, params.shapes);
     btCompoundShape* compound = out->shapes[static_cast<size_t>(b)].compound.get();
     if (!compound) continue;
+    if (params.polyhedral_contacts)
+      for (auto& child : out->shapes[static_cast<size_t>(b)].children)
+        if (child->isPolyhedral())
+          static_cast<btPolyhedralConvexShape*>(child.get())->initializePolyhedralFeatures();
     auto collider = std::make_unique<btMultiBodyLinkCollider>(out->mb.get(), b - 1);
     collider->setCollisionShape(compound);
     collider->setFriction(params.link_friction);

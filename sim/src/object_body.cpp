@@ -198,7 +198,9 @@ std::unique_ptr<ObjectBody> make_object_body(const Mesh& mesh, const SimParams& 
       points.reserve(part.size());
       for (const auto& p : part) points.push_back(X_CO * p);
       auto hull = make_convex_hull_shape(points, params.object_margin_m);
-      if (hull) out->hulls.push_back(std::move(hull));
+      if (!hull) continue;
+      if (params.polyhedral_contacts) hull->initializePolyhedralFeatures();
+      out->hulls.push_back(std::move(hull));
     }
     if (out->hulls.empty())
       throw std::invalid_argument("make_object_body: mesh '" + mesh.name +
@@ -218,7 +220,9 @@ std::unique_ptr<ObjectBody> make_object_body(const Mesh& mesh, const SimParams& 
   ci.m_friction = params.contact.mu;
   ci.m_restitution = 0.0;
   ci.m_rollingFriction = 0.0;
-  ci.m_spinningFriction = 0.0;
+  // Soft-finger contacts (ContactModel): torsional friction up to μ·radius·normal force; Bullet
+  // combines spinning friction as object spin × link friction (1) + link spin (0) × μ.
+  ci.m_spinningFriction = params.contact.mu * params.contact.soft_finger_radius_m;
   ci.m_linearDamping = 0.0;
   ci.m_angularDamping = 0.0;
   out->body = std::make_unique<btRigidBody>(ci);

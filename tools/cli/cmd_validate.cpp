@@ -25,6 +25,12 @@ struct ValidateOptions {
   std::optional<double> density_kgm3;
   std::string object_shape = "auto";
   std::string cache_dir;
+  std::optional<double> time_step_s;
+  std::optional<int> solver_iterations;
+  std::optional<double> concavity;
+  std::optional<double> squeeze_rad;
+  std::optional<double> effort_scale;
+  std::optional<int> hacd_triangles;
   int grasps = -1;
   std::string out;
   bool quiet = false;
@@ -72,6 +78,12 @@ void run_validate(const ValidateOptions& opt) {
   if (opt.density_kgm3) params.density_kgm3 = *opt.density_kgm3;
   params.object_shape = object_shape_from_string(opt.object_shape);
   params.decomposition_cache_dir = opt.cache_dir;
+  if (opt.time_step_s) params.time_step_s = *opt.time_step_s;
+  if (opt.solver_iterations) params.solver_iterations = *opt.solver_iterations;
+  if (opt.squeeze_rad) params.squeeze_rad = *opt.squeeze_rad;
+  if (opt.effort_scale) params.effort_scale = *opt.effort_scale;
+  if (opt.concavity) params.decomposition.concavity = *opt.concavity;
+  if (opt.hacd_triangles) params.decomposition.max_input_triangles = *opt.hacd_triangles;
   const SimTests tests = sim_tests_from_string(opt.tests);
 
   const bool progress = !opt.quiet;
@@ -119,6 +131,20 @@ void add_validate_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--cache-dir", opt->cache_dir,
                   "Directory caching convex decompositions on disk (by mesh hash)");
+  cmd->add_option("--time-step", opt->time_step_s, "Physics time step [s] (default 1/960)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--solver-iterations", opt->solver_iterations,
+                  "Constraint solver iterations per step")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--squeeze", opt->squeeze_rad,
+                  "Squeeze spring rest point past the planned joint values [rad] (default 0.5)");
+  cmd->add_option("--effort-scale", opt->effort_scale,
+                  "Multiply every joint effort limit (e.g. 0.5 for weaker motors)");
+  cmd->add_option("--concavity", opt->concavity,
+                  "HACD: largest concavity of a part, fraction of the bounding-box diagonal");
+  cmd->add_option("--hacd-triangles", opt->hacd_triangles,
+                  "HACD: decompose a vertex-clustered copy of at most this many triangles "
+                  "(0 = the mesh itself)");
   cmd->add_option("--grasps", opt->grasps, "Validate only the first K grasps of the plan");
   cmd->add_option("--out", opt->out, "Output sim.json")->required();
   cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");

@@ -1,0 +1,94 @@
+// Physics validation speed (issue 5): close + lift + shake of one planned grasp, one thread.
+// Target: ≤ 0.3 s for the default SAH-like hand on a 3000-triangle object. Run:
+//   build/tools/cordgrasp-microbench --benchmark_filter=Validate
+//     --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include "cordgrasp/core/hand_io.h"
+#include "cordgrasp/core/kinematics.h"
+#include "cordgrasp/core/object_meshes.h"
+#include "cordgrasp/core/plan_generic_grasps.h"
+#include "cordgrasp/core/shapes.h"
+#include "cordgrasp/sim/bullet_hand_collider.h"
+#include "cordgrasp/sim/convex_decomposition.h"
+#include "cordgrasp/sim/validate_grasp.h"
+
+namespace {
+
+using namespace cordgrasp;
+
+/// First force-closure grasp of the seeded generic planner (deterministic).
+Grasp planned_grasp(const Mesh& mesh, const HandModel& hand) {
+  auto collider = make_bullet_hand_collider(hand, mesh);
+  PlanParams params;
+  params.grasps = 1;
+  params.seed = 1;
+  params.time_limit_s = 30.0;
+  const PlanResult plan = plan_generic_grasps(mesh, hand, *collider, params);
+  return plan.grasps.empty() ? Grasp{} : plan.grasps.front();
+}
+
+void validate_benchmark(benchmark::State& state, const HandModel& hand, const Mesh& mesh,
+                        const SimParams& params) {
+  const Grasp grasp = planned_grasp(mesh, hand);
+  if (grasp.q.size() == 0) {
+    state.SkipWithError("no force-closure grasp planned");
+    return;
+  }
+  const SimTests close_lift_shake{true, true, false};
+  validate_grasp(mesh, hand, grasp, params, close_lift_shake);  // warms the HACD cache
+  int steps = 0;
+  for (auto _ : state) {
+    const SimResult r = validate_grasp(mesh, hand, grasp, params, close_lift_shake);
+    steps = 0;
+    for (const PhaseResult& p : r.phases) steps += p.steps;
+    benchmark::DoNotOptimize(r.outcome);
+  }
+  state.counters["steps"] = steps;
+  state.counters["triangles"] = static_cast<double>(mesh.triangles.size());
+}
+
+/// The default hand on the shipped mug (2976 triangles, HACD decomposition).
+void BM_ValidateSahMug(benchmark::State& state) {
+  static const HandModel hand = load_hand("cordgrasp_sah");
+  static const Mesh mesh = make_object_mesh("mug");
+  validate_benchmark(state, hand, mesh, SimParams{});
+}
+BENCHMARK(BM_ValidateSahMug)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+/// The default hand on the shipped bottle (2880 triangles).
+void BM_ValidateSahBottle(benchmark::State& state) {
+  static const HandModel hand = load_hand("cordgrasp_sah");
+  static const Mesh mesh = make_object_mesh("bottle");
+  validate_benchmark(state, hand, mesh, SimParams{});
+}
+BENCHMARK(BM_ValidateSahBottle)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+/// The parallel gripper pinching a 5 cm box (a single hull).
+void BM_ValidateGripperBox(benchmark::State& state) {
+  static const HandModel hand = load_hand("parallel_gripper");
+  static const Mesh mesh = make_box_mesh(Eigen::Vector3d::Constant(0.05));
+  Grasp grasp;
+  grasp.X_OG.linear() = Eigen::Vector3d(1, -1, -1).asDiagonal();
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(hand.joints.size()));
+  Eigen::VectorXd q0 = q;
+  q[find_joint(hand, "left_finger_joint")] = 0.025;
+  q0[find_joint(hand, "left_finger_joint")] = 0.05;
+  grasp.q = apply_couplings(hand, q);
+  grasp.q_preshape = apply_couplings(hand, q0);
+  grasp.X_OB = root_pose_for_gcp(hand, grasp.q, grasp.X_OG);
+  const SimTests close_lift_shake{true, true, false};
+  for (auto _ : state)
+    benchmark::DoNotOptimize(validate_grasp(mesh, hand, grasp, SimParams{}, close_lift_shake));
+}
+BENCHMARK(BM_ValidateGripperBox)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+/// HACD decomposition of the shipped mug (uncached).
+void BM_DecomposeMug(benchmark::State& state) {
+  static const Mesh mesh = make_object_mesh("mug");
+  for (auto _ : state)
+    benchmark::DoNotOptimize(convex_decomposition(mesh, DecompositionParams{}).parts.size());
+}
+BENCHMARK(BM_DecomposeMug)->Unit(benchmark::kMillisecond)->Iterations(2);
+
+}  // namespace

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Fraction of the cord planner's force-closure grasps that hold through lift + shake in Bullet
+# (issue 5), per object set and hand. Plans and sim.json files go to OUT_DIR; one summary line
+# per (set, hand) at the end.
+#
+#   tools/hold_rates.sh [OUT_DIR] [GRASPS_PER_OBJECT] [HANDS...]
+#   e.g. tools/hold_rates.sh /tmp/holds 3 cordgrasp_sah schunk_sah panda_hand
+#
+# Environment: CORDGRASP (the executable, default build/tools/cordgrasp), DATA (shared data,
+# default ../shared/data), TIME_LIMIT (plan time limit per object, default 10 s),
+# SOFT_FINGER (soft-finger radius for two-finger grippers, default 0.005 m: two point
+# contacts are never force closure).
+set -euo pipefail
+ROOT="$(cd "$(dirname "$0")/.." && pwd)"
+OUT="${1:-/tmp/cordgrasp_hold_rates}"
+GRASPS="${2:-3}"
+shift $(( $# > 2 ? 2 : $# ))
+HANDS=("$@")
+[ ${#HANDS[@]} -eq 0 ] && HANDS=(cordgrasp_sah schunk_sah panda_hand)
+CG="${CORDGRASP:-$ROOT/build/tools/cordgrasp}"
+DATA="${DATA:-$ROOT/../shared/data}"
+TIME_LIMIT="${TIME_LIMIT:-10}"
+SOFT_FINGER="${SOFT_FINGER:-0.005}"
+mkdir -p "$OUT"
+
+declare -A SETS
+SETS[shipped]="$(ls "$ROOT"/assets/objects/*.obj)"
+SETS[kit]="$(ls "$DATA"/objects/kit/*.obj)"
+SETS[ycb]="$(ls "$DATA"/objects/ycb/*.obj)"
+
+summary=()
+for hand in "${HANDS[@]}"; do
+  extra=()
+  case "$hand" in panda_hand|parallel_gripper) extra=(--soft-finger-radius "$SOFT_FINGER") ;; esac
+  for set in shipped kit ycb; do
+    held=0; total=0; no_plan=0
+    for obj in ${SETS[$set]}; do
+      name="$(basename "$obj" .obj)"
+      base="$OUT/$hand/$set/$name"
+      mkdir -p "$(dirname "$base")"
+      if ! "$CG" plan --hand "$hand" --object "$obj" --grasps "$GRASPS" \
+          --time-limit "$TIME_LIMIT" --seed 1 "${extra[@]}" --out "$base.plan.json" \
+          > "$base.plan.txt" 2>&1; then
+        no_plan=$((no_plan + 1)); continue
+      fi
+      "$CG" validate --plan "$base.plan.json" --tests lift,shake --quiet \
+          --out "$base.sim.json" > "$base.sim.txt" 2>&1 || { echo "validate failed: $base"; continue; }
+      line="$(tail -n 1 "$base.sim.txt")"   # "held k / n (...)"
+      k="$(echo "$line" | awk '{print $2}')"; n="$(echo "$line" | awk '{print $4}')"
+      held=$((held + k)); total=$((total + n))
+      echo "$hand $set $name: $line"
+    done
+    summary+=("$hand $set: held $held / $total force-closure grasps ($no_plan objects without a plan)")
+  done
+done
+printf '%s\n' "${summary[@]}" | tee "$OUT/summary.txt"
