@@ -134,8 +134,33 @@ Camera frame_points(const std::vector<Eigen::Vector3d>& p_W, const ViewSpec& spe
     ay = std::min(ay, z - y / ty);
     by = std::min(by, z + y / ty);
   }
-  const double cx = 0.5 * tx * (bx - ax), cy = 0.5 * ty * (by - ay);
-  const double cz = std::min(0.5 * (ax + bx), 0.5 * (ay + by));
+  double cx = 0.5 * tx * (bx - ax), cy = 0.5 * ty * (by - ay);
+  const double czx = 0.5 * (ax + bx), czy = 0.5 * (ay + by);
+  // (Kept a little in front of the nearest point so degenerate inputs still have depth.)
+  const double cz = std::min({czx, czy, z_min - 1e-6 * depth});
+  // The camera now stands back further than the other axis needs: re-centre that axis so its
+  // extreme rays are symmetric, max (c − x)/(z − cz) = max (x − c)/(z − cz), by bisection
+  // (the difference is increasing in c).
+  const auto recentre = [&](const Eigen::Vector3d& axis, double& c) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& p : p_W) {
+      lo = std::min(lo, axis.dot(p));
+      hi = std::max(hi, axis.dot(p));
+    }
+    for (int it = 0; it < 60 && hi - lo > 1e-12 * (1.0 + std::abs(hi)); ++it) {
+      const double mid = 0.5 * (lo + hi);
+      double left = -std::numeric_limits<double>::infinity(), right = left;
+      for (const auto& p : p_W) {
+        const double depth = f.dot(p) - cz, x = axis.dot(p);
+        left = std::max(left, (mid - x) / depth);
+        right = std::max(right, (x - mid) / depth);
+      }
+      (left < right ? lo : hi) = mid;
+    }
+    c = 0.5 * (lo + hi);
+  };
+  if (czx > cz) recentre(r, cx);
+  if (czy > cz) recentre(u, cy);
   cam.eye_W = cx * r + cy * u + cz * f;
   const double dist_near = z_min - cz, dist_far = z_max - cz;
   cam.target_W = cam.eye_W + 0.5 * (dist_near + dist_far) * f;

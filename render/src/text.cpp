@@ -8,25 +8,37 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <map>
+#include <memory>
 #include <mutex>
 
 namespace cordgrasp {
 namespace {
 
-// One FreeType library and face for the process, loaded on first use.
+// FreeType faces for the process, one per font path, loaded on first use; a path that fails
+// is warned about once and remembered.
 class Font {
  public:
+  /// The face for the current caption_font_path(), or null.
   static Font& instance() {
-    static Font font;
-    return font;
+    static std::mutex registry_mutex;
+    static std::map<std::string, std::unique_ptr<Font>> fonts;
+    const std::string path = caption_font_path();
+    std::lock_guard<std::mutex> lock(registry_mutex);
+    std::unique_ptr<Font>& font = fonts[path];
+    if (!font) font.reset(new Font(path));
+    return *font;
   }
 
   std::mutex& mutex() { return mutex_; }
   FT_Face face() const { return face_; }
+  ~Font() {
+    if (face_) FT_Done_Face(face_);
+    if (library_) FT_Done_FreeType(library_);
+  }
 
  private:
-  Font() {
-    const std::string path = caption_font_path();
+  explicit Font(const std::string& path) {
     if (!std::filesystem::exists(path)) {
       warn("font '" + path + "' not found");
       return;
@@ -40,10 +52,6 @@ class Font {
       face_ = nullptr;
       warn("FreeType cannot load font '" + path + "'");
     }
-  }
-  ~Font() {
-    if (face_) FT_Done_Face(face_);
-    if (library_) FT_Done_FreeType(library_);
   }
   static void warn(const std::string& what) {
     std::cerr << "cordgrasp: warning: " << what

@@ -9,7 +9,7 @@ namespace cordgrasp {
 /// Path of the caption font: $CORDGRASP_FONT if set, else DejaVu Sans (fonts-dejavu-core).
 std::string caption_font_path();
 
-/// True when the caption font loads. On the first failure, warns once on stderr.
+/// True when the caption font loads; a font that fails is warned about once on stderr.
 bool caption_font_available();
 
 /// Width [px] of one line of UTF-8 `text` at font size `size_px`; 0 without a font.
