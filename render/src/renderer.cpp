@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
@@ -214,6 +216,85 @@ void blur_mask(std::vector<float>& m, int n, int r) {
   }
 }
 
+// Caption band under the 3D view (final resolution).
+struct CaptionLayout {
+  int lines = 0;
+  int size_px = 0;
+  int band_px = 0;
+};
+
+CaptionLayout caption_layout(const Scene& scene, const RenderParams& params) {
+  CaptionLayout c;
+  if (scene.caption.empty() || !caption_font_available()) return c;
+  c.lines = 1 + static_cast<int>(std::count(scene.caption.begin(), scene.caption.end(), '\n'));
+  c.size_px = params.caption_size_px > 0
+                  ? static_cast<int>(std::lround(params.caption_size_px))
+                  : std::max(11, static_cast<int>(std::lround(params.height_px / 36.0)));
+  c.band_px = std::min(params.height_px - 1,
+                       static_cast<int>(std::lround((1.45 * c.lines + 0.7) * c.size_px)));
+  return c;
+}
+
+// The floor under one or more scenes and every point the camera must see.
+struct FloorFrame {
+  Eigen::Vector3d up = Eigen::Vector3d::UnitZ(), fa, fb;  // floor normal and in-floor axes
+  double floor = 0.0, top = 0.0;                          // heights along up [m]
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;                  // footprint along fa, fb [m]
+  double footprint = 1e-6;                                // largest extent [m]
+  bool has_content = false;
+  bool ground = false;
+  std::vector<Eigen::Vector3d> extent;  // scene points plus their floor projections
+};
+
+FloorFrame floor_frame(const std::vector<const Scene*>& scenes, const RenderParams&) {
+  FloorFrame ff;
+  const Scene& first = *scenes.front();
+  ff.up = first.up_W.norm() > 0.0 ? first.up_W.normalized() : Eigen::Vector3d::UnitZ();
+  ff.fa = ff.up.unitOrthogonal();
+  ff.fb = ff.up.cross(ff.fa);
+  std::optional<double> explicit_floor;
+  for (const Scene* scene : scenes) {
+    const auto p = scene_extent_points(*scene);
+    ff.extent.insert(ff.extent.end(), p.begin(), p.end());
+    ff.ground = ff.ground || scene->ground != Ground::kNone;
+    if (scene->floor_m)
+      explicit_floor =
+          explicit_floor ? std::min(*explicit_floor, *scene->floor_m) : *scene->floor_m;
+  }
+  ff.has_content = !ff.extent.empty();
+  if (!ff.has_content) {
+    // An empty scene still needs a camera: frame a 10 cm cube at the origin.
+    ff.extent = {Eigen::Vector3d::Constant(0.05), Eigen::Vector3d::Constant(-0.05)};
+  }
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  ff.x0 = ff.y0 = lo;
+  ff.x1 = ff.y1 = hi;
+  for (const auto& p : ff.extent) {
+    lo = std::min(lo, ff.up.dot(p));
+    hi = std::max(hi, ff.up.dot(p));
+    ff.x0 = std::min(ff.x0, ff.fa.dot(p));
+    ff.x1 = std::max(ff.x1, ff.fa.dot(p));
+    ff.y0 = std::min(ff.y0, ff.fb.dot(p));
+    ff.y1 = std::max(ff.y1, ff.fb.dot(p));
+  }
+  ff.floor = explicit_floor ? std::min(*explicit_floor, lo) : lo;
+  ff.top = hi;
+  ff.footprint = std::max({ff.x1 - ff.x0, ff.y1 - ff.y0, ff.top - ff.floor, 1e-6});
+  if (ff.ground && ff.has_content) {
+    // The floor under the scene (vertical projection of everything) must be in view too.
+    const size_t n = ff.extent.size();
+    for (size_t i = 0; i < n; ++i)
+      ff.extent.push_back(ff.extent[i] - (ff.up.dot(ff.extent[i]) - ff.floor) * ff.up);
+  }
+  return ff;
+}
+
+Camera frame_extent(const FloorFrame& ff, const RenderParams& params, double aspect) {
+  ViewSpec spec = params.view;
+  spec.up_W = ff.up;
+  return frame_points(ff.extent, spec, aspect);
+}
+
 }  // namespace
 
 struct Renderer::Impl {
@@ -417,65 +498,28 @@ Image Renderer::Impl::render(const Scene& scene, const RenderParams& params, Ren
     throw std::invalid_argument("render: supersample " + std::to_string(params.supersample) +
                                 " outside [1, 4]");
 
-  // Caption band at the bottom (final resolution).
   const int W = params.width_px;
-  int caption_lines = 0, caption_size = 0, band = 0;
-  if (!scene.caption.empty() && caption_font_available()) {
-    caption_lines =
-        1 + static_cast<int>(std::count(scene.caption.begin(), scene.caption.end(), '\n'));
-    caption_size = params.caption_size_px > 0
-                       ? static_cast<int>(std::lround(params.caption_size_px))
-                       : std::max(11, static_cast<int>(std::lround(params.height_px / 36.0)));
-    band = std::min(
-        params.height_px - 1,
-        static_cast<int>(std::lround(caption_lines * 1.45 * caption_size + 0.7 * caption_size)));
-  }
-  const int H = params.height_px - band;
+  const CaptionLayout caption = caption_layout(scene, params);
+  const int H = params.height_px - caption.band_px;
   const int s = std::max(1, std::min({params.supersample, kMaxTargetPx / W, kMaxTargetPx / H}));
 
   context.make_current(W, H);
   evict_expired();
 
-  // Camera: explicit or framed on everything drawn (plus the floor footprint).
-  const Eigen::Vector3d up =
-      scene.up_W.norm() > 0.0 ? scene.up_W.normalized() : Eigen::Vector3d::UnitZ();
-  std::vector<Eigen::Vector3d> extent = scene_extent_points(scene);
-  const bool has_content = !extent.empty();
-  if (!has_content) extent.push_back(Eigen::Vector3d::Zero());
-  const Eigen::Vector3d fa = up.unitOrthogonal(), fb = up.cross(fa);
-  double floor = std::numeric_limits<double>::infinity(), top = -floor;
-  double x0 = floor, x1 = -floor, y0 = floor, y1 = -floor;
-  for (const auto& p : extent) {
-    floor = std::min(floor, up.dot(p));
-    top = std::max(top, up.dot(p));
-    x0 = std::min(x0, fa.dot(p));
-    x1 = std::max(x1, fa.dot(p));
-    y0 = std::min(y0, fb.dot(p));
-    y1 = std::max(y1, fb.dot(p));
-  }
-  const double footprint = std::max({x1 - x0, y1 - y0, top - floor, 1e-6});
+  // Camera: explicit or framed on everything drawn (plus the floor under it).
+  const FloorFrame ff = floor_frame({&scene}, params);
+  const Eigen::Vector3d& up = ff.up;
+  const Eigen::Vector3d &fa = ff.fa, &fb = ff.fb;
+  const double floor = ff.floor, footprint = ff.footprint;
+  const double x0 = ff.x0, x1 = ff.x1, y0 = ff.y0, y1 = ff.y1;
+  const bool has_content = ff.has_content;
   const auto on_floor = [&](double a, double b) {
     return Eigen::Vector3d(a * fa + b * fb + floor * up);
   };
-  if (scene.ground != Ground::kNone && has_content) {
-    // The floor under the scene (vertical projection of everything) must be in view too.
-    const size_t n = extent.size();
-    for (size_t i = 0; i < n; ++i) extent.push_back(extent[i] - (up.dot(extent[i]) - floor) * up);
-  }
 
   Frame fr;
   const double aspect = static_cast<double>(W) / H;
-  if (params.camera) {
-    fr.camera = *params.camera;
-  } else {
-    ViewSpec spec = params.view;
-    spec.up_W = up;
-    if (!has_content) {
-      extent.push_back(Eigen::Vector3d::Constant(0.05));
-      extent.push_back(Eigen::Vector3d::Constant(-0.05));
-    }
-    fr.camera = frame_points(extent, spec, aspect);
-  }
+  fr.camera = params.camera ? *params.camera : frame_extent(ff, params, aspect);
   fr.view = view_transform(fr.camera).matrix();
   fr.proj = projection_matrix(fr.camera, aspect);
   fr.w_px = W * s;
@@ -773,14 +817,14 @@ Image Renderer::Impl::render(const Scene& scene, const RenderParams& params, Ren
   }
   for (size_t i = 3; i < static_cast<size_t>(W) * H * 4; i += 4) image.rgba[i] = 255;
   bool caption_drawn = false;
-  if (band > 0) {
+  if (caption.band_px > 0) {
     std::vector<std::string> rows;
     std::istringstream in(scene.caption);
     for (std::string row; std::getline(in, row);) rows.push_back(row);
-    const int row_h = (band) / std::max<int>(1, rows.size());
+    const int row_h = caption.band_px / std::max<int>(1, rows.size());
     for (size_t i = 0; i < rows.size(); ++i)
       caption_drawn |= draw_text_centered(image, rows[i], 0, H + static_cast<int>(i) * row_h, W,
-                                          row_h, caption_size);
+                                          row_h, caption.size_px);
   }
   if (info) {
     info->camera = fr.camera;
@@ -799,6 +843,14 @@ Image Renderer::render(const Scene& scene, const RenderParams& params, RenderInf
 }
 
 std::string Renderer::gl_description() const { return impl_->context.description(); }
+
+Camera frame_scenes(const std::vector<Scene>& scenes, const RenderParams& params) {
+  if (scenes.empty()) throw std::invalid_argument("frame_scenes: no scenes");
+  std::vector<const Scene*> ptrs;
+  for (const Scene& s : scenes) ptrs.push_back(&s);
+  const int h = params.height_px - caption_layout(scenes.front(), params).band_px;
+  return frame_extent(floor_frame(ptrs, params), params, static_cast<double>(params.width_px) / h);
+}
 
 Image render_scene(const Scene& scene, const RenderParams& params) {
   Renderer renderer;

@@ -2,9 +2,12 @@
 // Pixel statistics shared by the render tests.
 #include <Eigen/Core>
 #include <cstdint>
+#include <cstdlib>
 #include <functional>
+#include <string>
 
 #include "cordgrasp/render/image.h"
+#include "cordgrasp/render/png_io.h"
 
 namespace cordgrasp::test {
 
@@ -43,6 +46,12 @@ inline PixelSet non_white(const Image& image, int below = 250) {
 inline Eigen::Vector3d rgb_at(const Image& image, int x, int y) {
   const std::uint8_t* p = image.pixel(x, y);
   return Eigen::Vector3d(p[0], p[1], p[2]);
+}
+
+/// Writes `image` as <name>.png into $CORDGRASP_TEST_IMAGE_DIR when that is set, to look at.
+inline void save_for_inspection(const Image& image, const std::string& name) {
+  const char* dir = std::getenv("CORDGRASP_TEST_IMAGE_DIR");
+  if (dir && *dir) write_png(std::string(dir) + "/" + name + ".png", image);
 }
 
 }  // namespace cordgrasp::test

@@ -2,6 +2,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cordgrasp/render/camera.h"
 #include "cordgrasp/render/image.h"
@@ -53,6 +54,12 @@ class Renderer {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// The camera render() would auto-frame for all `scenes` together (union of their extents,
+/// floor at the lowest floor), for the image layout of the first scene (caption band). Pass it
+/// as RenderParams::camera to show a series of frames from one viewpoint.
+/// @throws std::invalid_argument when `scenes` is empty.
+Camera frame_scenes(const std::vector<Scene>& scenes, const RenderParams& params);
 
 /// One-shot convenience: a fresh Renderer renders `scene`.
 Image render_scene(const Scene& scene, const RenderParams& params = {});

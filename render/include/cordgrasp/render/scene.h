@@ -2,6 +2,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -83,6 +84,7 @@ struct Scene {
   std::vector<SceneCone> cones;
   Ground ground = Ground::kNone;
   Eigen::Vector3d up_W = Eigen::Vector3d::UnitZ();  ///< world up: floor normal, screen up
+  std::optional<double> floor_m;  ///< floor height along up_W [m]; default: lowest point
   std::string caption;  ///< UTF-8 text under the picture; '\n' separates lines; empty: none
 };
 
