@@ -39,8 +39,8 @@ void main() {
   float len = length(n);
   n = len > 1e-20 ? n / len : v;
   if (dot(n, v) < 0.0) n = -n;
-  float diffuse = 0.68 * max(dot(n, kKey), 0.0) + 0.26 * max(dot(n, kFill), 0.0);
-  float ambient = mix(0.20, 0.34, 0.5 + 0.5 * dot(n, u_up_view));
+  float diffuse = 0.62 * max(dot(n, kKey), 0.0) + 0.32 * max(dot(n, kFill), 0.0);
+  float ambient = mix(0.26, 0.40, 0.5 + 0.5 * dot(n, u_up_view));
   vec3 h = normalize(kKey + v);
   float c = max(dot(n, h), 0.0);
   float c2 = c * c, c4 = c2 * c2, c8 = c4 * c4, c16 = c8 * c8;
