@@ -1,10 +1,11 @@
 #include "cordgrasp/core/mesh_io.h"
 
-#include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
+#include <assimp/Importer.hpp>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -37,17 +38,15 @@ namespace {
 
 /// Appends the triangles of `node` and its children, with node transforms applied (as RViz and
 /// ROS do). Vertices are welded on exact coordinates so that C is the mean of distinct points.
+/// Triangles with a NaN/inf corner are left out and counted.
 struct SoupBuilder {
   std::map<std::tuple<double, double, double>, int> index_of;
   Mesh mesh;
-  int non_finite = 0;
+  int faces_seen = 0;            ///< faces of any kind (points, lines, polygons)
+  int non_finite_triangles = 0;  ///< triangles with a NaN/inf corner
+  Eigen::Vector3d first_non_finite = Eigen::Vector3d::Zero();
 
-  int add_vertex(const aiVector3D& p) {
-    const Eigen::Vector3d v(p.x, p.y, p.z);
-    if (!v.allFinite()) {
-      ++non_finite;
-      return -1;
-    }
+  int add_vertex(const Eigen::Vector3d& v) {
     auto [it, inserted] =
         index_of.emplace(std::make_tuple(v.x(), v.y(), v.z()), int(mesh.vertices.size()));
     if (inserted) mesh.vertices.push_back(v);
@@ -58,18 +57,43 @@ struct SoupBuilder {
     const aiMatrix4x4 X = parent * node.mTransformation;
     for (unsigned m = 0; m < node.mNumMeshes; ++m) {
       const aiMesh& am = *scene.mMeshes[node.mMeshes[m]];
+      faces_seen += int(am.mNumFaces);
       for (unsigned f = 0; f < am.mNumFaces; ++f) {
         const aiFace& face = am.mFaces[f];
         if (face.mNumIndices != 3) continue;  // points and lines are not surface
-        Eigen::Vector3i tri;
-        for (int k = 0; k < 3; ++k) tri[k] = add_vertex(X * am.mVertices[face.mIndices[k]]);
-        if (tri.minCoeff() < 0) continue;
-        mesh.triangles.push_back(tri);
+        Eigen::Vector3d p[3];
+        bool finite = true;
+        for (int k = 0; k < 3; ++k) {
+          const aiVector3D& raw = am.mVertices[face.mIndices[k]];
+          const aiVector3D q = X * raw;
+          p[k] = Eigen::Vector3d(q.x, q.y, q.z);
+          if (finite && !p[k].allFinite()) {
+            // Report the file's coordinates (a transform would smear one NaN over x, y, z).
+            const Eigen::Vector3d file_p(raw.x, raw.y, raw.z);
+            if (non_finite_triangles == 0) first_non_finite = file_p.allFinite() ? p[k] : file_p;
+            finite = false;
+          }
+        }
+        if (!finite) {
+          ++non_finite_triangles;
+          continue;
+        }
+        mesh.triangles.emplace_back(add_vertex(p[0]), add_vertex(p[1]), add_vertex(p[2]));
       }
     }
     for (unsigned c = 0; c < node.mNumChildren; ++c) add_node(scene, *node.mChildren[c], X);
   }
 };
+
+/// A triangle whose altitude is below this fraction of the bounding-box diagonal has zero area
+/// within the precision of assimp's float coordinates (2^-23 ≈ 1.2e-7).
+constexpr double kDegenerateAltitudeRel = 1e-7;
+
+std::string point_text(const Eigen::Vector3d& p) {
+  std::ostringstream out;
+  out << '(' << p.x() << ", " << p.y() << ", " << p.z() << ')';
+  return out.str();
+}
 
 }  // namespace
 
@@ -81,10 +105,12 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
     std::ifstream probe(path, std::ios::binary);
     if (!probe) fail(path, "cannot open for reading");
   }
+  if (fs::file_size(path, ec) == 0 && !ec) fail(path, "empty file (0 bytes)");
   Assimp::Importer importer;
   std::string ext = fs::path(path).extension().string();
   if (ext.empty() || !importer.IsExtensionSupported(ext))
     fail(path, "unknown mesh format '" + ext + "' (use OBJ, STL, PLY, OFF, DAE or glTF)");
+  // Collada: keep node transforms and <unit>, drop the up-axis rotation (ROS/RViz semantics).
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate);
   if (!scene || !scene->mRootNode)
@@ -93,9 +119,13 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   SoupBuilder builder;
   builder.add_node(*scene, *scene->mRootNode, aiMatrix4x4());
   Mesh& mesh = builder.mesh;
-  if (builder.non_finite > 0)
-    fail(path, std::to_string(builder.non_finite) + " NaN/inf vertex coordinate(s)");
-  if (mesh.triangles.empty()) fail(path, "0 triangles");
+  if (builder.non_finite_triangles > 0)
+    fail(path, "NaN/inf vertex coordinate " + point_text(builder.first_non_finite) + " in " +
+                   std::to_string(builder.non_finite_triangles) + " triangle(s)");
+  if (mesh.triangles.empty())
+    fail(path, builder.faces_seen == 0 ? std::string("0 triangles (no faces in the file)")
+                                       : "0 triangles (its " + std::to_string(builder.faces_seen) +
+                                             " faces are all points or lines)");
 
   MeshLoadReport rep;
   double scale = 1.0;
@@ -111,21 +141,25 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   if (scale != 1.0)
     for (auto& v : mesh.vertices) v *= scale;
 
-  // Drop degenerate triangles: repeated indices or zero area (relative to the mesh size).
-  const double diag = mesh_bounds(mesh).size().norm();
-  const double min_double_area = 1e-12 * diag * diag;
+  // Drop degenerate triangles: repeated corners, or an altitude (to the longest side) below the
+  // precision of the file's float coordinates relative to the mesh size.
+  const double min_altitude = kDegenerateAltitudeRel * mesh_bounds(mesh).size().norm();
   std::vector<Eigen::Vector3i> kept;
   kept.reserve(mesh.triangles.size());
   for (const auto& t : mesh.triangles) {
-    const bool repeated = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
-    const auto& a = mesh.vertices[t[0]];
-    if (!repeated &&
-        (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a).norm() > min_double_area)
-      kept.push_back(t);
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
+    const Eigen::Vector3d& a = mesh.vertices[t[0]];
+    const Eigen::Vector3d& b = mesh.vertices[t[1]];
+    const Eigen::Vector3d& c = mesh.vertices[t[2]];
+    const double longest =
+        std::sqrt(std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()}));
+    const double double_area = (b - a).cross(c - a).norm();
+    if (double_area > min_altitude * longest) kept.push_back(t);
   }
   rep.degenerate_dropped = int(mesh.triangles.size() - kept.size());
   if (kept.empty())
-    fail(path, "all " + std::to_string(mesh.triangles.size()) + " triangles are degenerate");
+    fail(path,
+         "all " + std::to_string(mesh.triangles.size()) + " triangles are degenerate (zero area)");
   mesh.triangles = std::move(kept);
 
   // Compact: keep only referenced vertices, in first-use order.

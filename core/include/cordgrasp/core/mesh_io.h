@@ -24,10 +24,13 @@ struct MeshLoadReport {
 };
 
 /// Loads OBJ, STL (ascii/binary), PLY, OFF, DAE or glTF via assimp as a triangle soup in meters.
-/// Keeps the soup as authored (no welding, no normal fixing, DAE up-axis not applied).
-/// Degenerate triangles are dropped and counted in `report`.
-/// @throws InputError "load_mesh: '<path>': <problem>" for a missing/unreadable file, unknown
-///         format, zero triangles, NaN/inf coordinates or all-degenerate geometry.
+/// Keeps the soup as authored (no normal fixing or re-winding); only vertices at identical
+/// coordinates are shared. Node transforms are applied; for DAE, `<unit>` is applied and the
+/// up-axis rotation is not (as ROS/RViz). Degenerate triangles (repeated corner, or altitude
+/// below 1e-7 of the bounding-box diagonal, i.e. zero at float precision) are dropped and
+/// counted in `report`.
+/// @throws InputError "load_mesh: '<path>': <problem>" for a missing/unreadable/empty file,
+///         unknown format, zero triangles, NaN/inf coordinates or all-degenerate geometry.
 Mesh load_mesh(const std::string& path, const MeshLoadOptions& options = {},
                MeshLoadReport* report = nullptr);
 

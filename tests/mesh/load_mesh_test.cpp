@@ -1,0 +1,179 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "cordgrasp/core/error.h"
+#include "cordgrasp/core/mesh_io.h"
+#include "cordgrasp/core/mesh_properties.h"
+#include "cordgrasp/core/mesh_topology.h"
+#include "cordgrasp/core/mesh_volume.h"
+#include "test_paths.h"
+
+namespace cordgrasp {
+namespace {
+
+constexpr double kFloatTol_m = 1e-8;  ///< assimp reads coordinates (and DAE matrices) as float
+
+/// The InputError message of load_mesh(path), or "" when it loads.
+std::string load_error(const std::string& path, const MeshLoadOptions& options = {}) {
+  try {
+    load_mesh(path, options);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+struct BadInput {
+  std::string file;
+  std::string problem;  ///< expected part of the message
+};
+
+TEST(LoadMesh, ThrowsWithPathWhenFileMissing) {
+  const std::string path = test::test_data("meshes/no_such_mesh.obj");
+  const std::string msg = load_error(path);
+  EXPECT_EQ(msg, "load_mesh: '" + path + "': file not found");
+}
+
+TEST(LoadMesh, EveryBadInputFileGivesOneLineNamingFileAndProblem) {
+  const std::vector<BadInput> cases{
+      {"unknown_format.xyz", "unknown mesh format '.xyz'"},
+      {"empty.obj", "empty file (0 bytes)"},
+      {"only_vertices.obj", "0 triangles (no faces in the file)"},
+      {"nan_coordinate.obj", "NaN/inf vertex coordinate (0, nan, 0) in 3 triangle(s)"},
+      {"inf_coordinate.obj", "NaN/inf vertex coordinate (0, 0, inf) in 3 triangle(s)"},
+      {"all_degenerate.obj", "all 3 triangles are degenerate (zero area)"},
+  };
+  for (const BadInput& c : cases) {
+    SCOPED_TRACE(c.file);
+    const std::string path = test::test_data("meshes/" + c.file);
+    const std::string msg = load_error(path);
+    EXPECT_EQ(msg.rfind("load_mesh: '" + path + "': ", 0), 0u) << msg;
+    EXPECT_NE(msg.find(c.problem), std::string::npos) << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  }
+}
+
+TEST(LoadMesh, DirectoryIsRejected) {
+  EXPECT_NE(load_error(test::test_data("meshes")).find("is a directory"), std::string::npos);
+}
+
+TEST(LoadMesh, DropsAndCountsDegenerateTrianglesIncludingFloatRoundedCollinearOnes) {
+  MeshLoadReport report;
+  const Mesh m = load_mesh(test::test_data("meshes/some_degenerate.obj"), {}, &report);
+  EXPECT_EQ(report.degenerate_dropped, 3);
+  EXPECT_EQ(m.triangles.size(), 4u);
+  EXPECT_EQ(m.vertices.size(), 4u);  // vertices only used by dropped triangles are removed
+  EXPECT_TRUE(mesh_topology(m).closed);
+}
+
+TEST(LoadMesh, MillimeterBoxIsScaledByMmAndDetectedByAuto) {
+  const std::string path = test::test_data("meshes/box_100mm.obj");
+  const Eigen::Vector3d size_m(0.1, 0.08, 0.06);
+  MeshLoadReport report;
+  MeshLoadOptions options;
+  options.units = LengthUnits::kAuto;
+  Mesh m = load_mesh(path, options, &report);
+  EXPECT_TRUE(report.auto_chose_mm);
+  EXPECT_EQ(report.scale_to_m, 1e-3);
+  EXPECT_TRUE(mesh_bounds(m).size().isApprox(size_m, 1e-12));
+
+  options.units = LengthUnits::kMillimeters;
+  m = load_mesh(path, options, &report);
+  EXPECT_FALSE(report.auto_chose_mm);
+  EXPECT_TRUE(mesh_bounds(m).size().isApprox(size_m, 1e-12));
+
+  options.units = LengthUnits::kMeters;
+  m = load_mesh(path, options, &report);
+  EXPECT_EQ(report.scale_to_m, 1.0);
+  EXPECT_TRUE(mesh_bounds(m).size().isApprox(1000 * size_m, 1e-12));
+}
+
+TEST(LoadMesh, AutoUnitsKeepMetersForAMeterScaleMesh) {
+  MeshLoadReport report;
+  MeshLoadOptions options;
+  options.units = LengthUnits::kAuto;
+  load_mesh(test::test_data("meshes/formats/box.obj"), options, &report);
+  EXPECT_FALSE(report.auto_chose_mm);
+  EXPECT_EQ(report.scale_to_m, 1.0);
+}
+
+TEST(LoadMesh, ParsesUnitNames) {
+  EXPECT_EQ(parse_length_units("m"), LengthUnits::kMeters);
+  EXPECT_EQ(parse_length_units("mm"), LengthUnits::kMillimeters);
+  EXPECT_EQ(parse_length_units("auto"), LengthUnits::kAuto);
+  EXPECT_THROW(parse_length_units("cm"), std::invalid_argument);
+}
+
+// ---- Format coverage: the same box in every format (tests/data/meshes/formats/make_formats.py).
+
+/// The reference box: x in [0.01, 0.03], y in [-0.01, 0.02], z in [0.005, 0.055], outward.
+Mesh reference_box() {
+  const Eigen::Vector3d lo(0.01, -0.01, 0.005), hi(0.03, 0.02, 0.055);
+  Mesh m;
+  for (int i = 0; i < 8; ++i)
+    m.vertices.emplace_back((i & 1) ? hi.x() : lo.x(), (i & 2) ? hi.y() : lo.y(),
+                            (i & 4) ? hi.z() : lo.z());
+  m.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                 {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  return m;
+}
+
+/// Index of the reference vertex within kFloatTol_m of p, or -1.
+int match_vertex(const Mesh& ref, const Eigen::Vector3d& p) {
+  for (size_t i = 0; i < ref.vertices.size(); ++i)
+    if ((ref.vertices[i] - p).norm() < kFloatTol_m) return int(i);
+  return -1;
+}
+
+/// Triangle as reference indices rotated so the smallest comes first (keeps the winding).
+std::array<int, 3> canonical(std::array<int, 3> t) {
+  std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+  return t;
+}
+
+TEST(LoadMesh, EveryFormatLoadsTheSameOrientedBox) {
+  const Mesh ref = reference_box();
+  std::vector<std::array<int, 3>> want;
+  for (const auto& t : ref.triangles) want.push_back(canonical({t[0], t[1], t[2]}));
+  std::sort(want.begin(), want.end());
+  const std::vector<std::string> files{
+      "box.obj", "box_ascii.stl", "box_binary.stl",      "box.ply",
+      "box.off", "box_zup.dae",   "box_zup_unit_mm.dae", "box.gltf"};
+  for (const std::string& file : files) {
+    SCOPED_TRACE(file);
+    MeshLoadReport report;
+    const Mesh m = load_mesh(test::test_data("meshes/formats/" + file), {}, &report);
+    EXPECT_EQ(report.degenerate_dropped, 0);
+    ASSERT_EQ(m.triangles.size(), 12u);
+    EXPECT_EQ(m.vertices.size(), 8u);  // STL's per-facet vertices are welded
+    std::vector<std::array<int, 3>> got;
+    for (const auto& t : m.triangles) {
+      std::array<int, 3> r;
+      for (int k = 0; k < 3; ++k) {
+        r[k] = match_vertex(ref, m.vertices[t[k]]);
+        ASSERT_GE(r[k], 0) << "vertex " << m.vertices[t[k]].transpose() << " is not a box corner";
+      }
+      got.push_back(canonical(r));
+    }
+    std::sort(got.begin(), got.end());
+    EXPECT_EQ(got, want);  // same triangles with the same winding
+    const auto v = closed_mesh_volume(m);
+    ASSERT_TRUE(v.has_value());
+    EXPECT_NEAR(v->volume_m3, 0.02 * 0.03 * 0.05, 1e-6 * 0.02 * 0.03 * 0.05);  // float input
+  }
+}
+
+TEST(LoadMesh, ColladaUpAxisIsIgnoredButNodeTransformsAreApplied) {
+  // box_zup.dae stores the box in a child node's frame: rotated 90° about z under a translated
+  // parent. Applying assimp's Z_UP → Y_UP root rotation would swap y and z.
+  const Aabb box = mesh_bounds(load_mesh(test::test_data("meshes/formats/box_zup.dae")));
+  EXPECT_LT((box.min - Eigen::Vector3d(0.01, -0.01, 0.005)).norm(), kFloatTol_m);
+  EXPECT_LT((box.max - Eigen::Vector3d(0.03, 0.02, 0.055)).norm(), kFloatTol_m);
+}
+
+}  // namespace
+}  // namespace cordgrasp
