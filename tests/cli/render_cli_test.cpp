@@ -1,0 +1,99 @@
+// `cordgrasp render`: exit codes, output files and one-line errors.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "test_paths.h"
+
+namespace cordgrasp {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string quoted(const std::string& path) { return "\"" + path + "\""; }
+
+// Width and height from a PNG's IHDR chunk (bytes 16..23, big-endian); (0, 0) if not a PNG.
+std::pair<std::uint32_t, std::uint32_t> png_size(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char h[24] = {0};
+  in.read(reinterpret_cast<char*>(h), sizeof h);
+  const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  if (!in || !std::equal(sig, sig + 8, h)) return {0, 0};
+  const auto be32 = [&h](int i) {
+    return (std::uint32_t(h[i]) << 24) | (std::uint32_t(h[i + 1]) << 16) |
+           (std::uint32_t(h[i + 2]) << 8) | std::uint32_t(h[i + 3]);
+  };
+  return {be32(16), be32(20)};
+}
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    path = fs::temp_directory_path() /
+           ("cordgrasp_render_cli_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+const std::string kMug = test::source_dir() + "/assets/objects/mug.obj";
+
+TEST(CliRender, ObjectPictureHasRequestedSize) {
+  TempDir dir;
+  const std::string out = (dir.path / "mug.png").string();
+  const auto r =
+      test::run_cordgrasp("render --object " + quoted(kMug) +
+                          " --size 320x200 --view side --ground grid --out " + quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(png_size(out), std::make_pair(320u, 200u));
+  EXPECT_NE(r.output.find(out), std::string::npos) << r.output;
+}
+
+TEST(CliRender, BadSizeIsOneLineErrorNamingIt) {
+  TempDir dir;
+  const auto r = test::run_cordgrasp("render --object " + quoted(kMug) + " --size 320by200 --out " +
+                                     quoted((dir.path / "x.png").string()));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(r.output.rfind("cordgrasp: error: --size '320by200'", 0), 0u) << r.output;
+  EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << r.output;
+  EXPECT_FALSE(fs::exists(dir.path / "x.png"));
+}
+
+TEST(CliRender, ApproachViewNeedsADirectionForAnObject) {
+  TempDir dir;
+  const std::string out = (dir.path / "x.png").string();
+  auto r = test::run_cordgrasp("render --object " + quoted(kMug) + " --view approach --out " +
+                               quoted(out));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("--approach"), std::string::npos) << r.output;
+  r = test::run_cordgrasp("render --object " + quoted(kMug) +
+                          " --view approach --approach 0,0,-1 --size 64x48 --out " + quoted(out));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(png_size(out), std::make_pair(64u, 48u));
+}
+
+TEST(CliRender, MissingObjectFileIsNamed) {
+  TempDir dir;
+  const std::string missing = (dir.path / "nope.obj").string();
+  const auto r = test::run_cordgrasp("render --object " + quoted(missing) + " --out " +
+                                     quoted((dir.path / "x.png").string()));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find(missing), std::string::npos) << r.output;
+}
+
+TEST(CliRender, UnwritableOutputIsNamed) {
+  TempDir dir;
+  const std::string out = (dir.path / "no" / "dir" / "x.png").string();
+  const auto r =
+      test::run_cordgrasp("render --object " + quoted(kMug) + " --size 32x32 --out " + quoted(out));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find(out), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace cordgrasp
