@@ -1,4 +1,5 @@
 // OSMesa renderer: projected areas, centroids, overlays, determinism, framing, shading.
+#include "cordgrasp/render/backend_info.h"
 #include "cordgrasp/render/renderer.h"
 
 #include <gtest/gtest.h>
@@ -397,6 +398,10 @@ TEST(RenderScene, RejectsInvalidSizes) {
   EXPECT_THROW(renderer.render(Scene{}, small_params(0, 10, 1)), std::invalid_argument);
   EXPECT_THROW(renderer.render(Scene{}, small_params(10, 10, 9)), std::invalid_argument);
   EXPECT_THROW(renderer.render(Scene{}, small_params(10, 9000, 1)), std::invalid_argument);
+}
+
+TEST(RenderGlInfo, DescribesTheSameContextAsARenderer) {
+  EXPECT_EQ(render_gl_info(), Renderer().gl_description());
 }
 
 TEST(Renderer, ReportsAnOpenGl3CoreContext) {
