@@ -180,6 +180,30 @@ TEST(ContactOverlay, ArrowsAlongNormalsOrFrictionConesOfAngleAtanMu) {
   EXPECT_TRUE(cones.cones[1].apex_W.isApprox(Eigen::Vector3d(0, -0.02, 0)));
 }
 
+TEST(GraspScene, HasObjectHandAtGraspPoseAndOverlays) {
+  const HandModel hand = toy_hand();
+  Grasp grasp;
+  grasp.X_OB = Eigen::Isometry3d(Eigen::Translation3d(0.0, 0.0, -0.1));
+  grasp.q = Eigen::VectorXd::Constant(4, 0.3);
+  grasp.contacts = {{2, {0.02, 0, 0}, {1, 0, 0}}, {4, {-0.02, 0, 0}, {-1, 0, 0}}};
+  GraspRegion region;
+  region.n = 1;
+  region.front_cords.assign(3, {{0.02, 0, 0}, {0, 0, 0.02}, {-0.02, 0, 0}});
+  const auto object = std::make_shared<const Mesh>(make_sphere_mesh(0.02));
+  const Scene scene =
+      grasp_scene(hand, make_hand_meshes(hand), object, grasp, &region, OverlayStyle{});
+  ASSERT_EQ(scene.meshes.size(), 1u + 5u);
+  EXPECT_EQ(scene.meshes[0].mesh, object);
+  // The palm (link 0, the root) sits at X_OB; finger links follow FK with couplings applied.
+  const auto X_WL = link_poses(hand, apply_couplings(hand, grasp.q), grasp.X_OB);
+  EXPECT_TRUE(scene.meshes[1].X_WM.isApprox(grasp.X_OB));
+  EXPECT_TRUE(scene.meshes[5].X_WM.isApprox(X_WL[4] * hand.links[4].visuals[0].X_LG));
+  EXPECT_EQ(scene.polylines.size(), 3u);
+  EXPECT_EQ(scene.points.size(), 3u + 2u);
+  EXPECT_EQ(scene.arrows.size(), 2u);
+  EXPECT_THROW(grasp_scene(hand, make_hand_meshes(hand), object, Grasp{}), std::invalid_argument);
+}
+
 TEST(RenderSnapshots, OneCameraForAllFramesSoStillThingsStayStill) {
   const HandModel hand = toy_hand();
   const auto X_WL = link_poses(hand, Eigen::VectorXd::Zero(4));

@@ -1,5 +1,4 @@
 // OSMesa renderer: projected areas, centroids, overlays, determinism, framing, shading.
-#include "cordgrasp/render/backend_info.h"
 #include "cordgrasp/render/renderer.h"
 
 #include <gtest/gtest.h>
@@ -9,6 +8,7 @@
 #include <cstdlib>
 
 #include "cordgrasp/core/shapes.h"
+#include "cordgrasp/render/backend_info.h"
 #include "cordgrasp/render/text.h"
 #include "image_stats.h"
 

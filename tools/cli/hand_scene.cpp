@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/shapes.h"
 
@@ -168,6 +169,25 @@ void add_contact_overlay(Scene& scene, const std::vector<Contact>& contacts,
       scene.arrows.push_back(arrow);
     }
   }
+}
+
+Scene grasp_scene(const HandModel& hand, const HandMeshes& meshes,
+                  std::shared_ptr<const Mesh> object, const Grasp& grasp, const GraspRegion* region,
+                  const OverlayStyle& style) {
+  if (grasp.q.size() != static_cast<Eigen::Index>(hand.joints.size()))
+    throw std::invalid_argument("grasp_scene: joint vector has " + std::to_string(grasp.q.size()) +
+                                " entries, hand '" + hand.name + "' has " +
+                                std::to_string(hand.joints.size()) + " joints");
+  Scene scene;
+  double radius = 0.05;
+  if (object) {
+    radius = bounding_radius(*object, vertex_mean(*object));
+    add_object(scene, object);
+  }
+  add_hand(scene, meshes, link_poses(hand, apply_couplings(hand, grasp.q), grasp.X_OB));
+  if (region) add_region_overlay(scene, *region, Eigen::Isometry3d::Identity(), radius, style);
+  add_contact_overlay(scene, grasp.contacts, Eigen::Isometry3d::Identity(), radius, style);
+  return scene;
 }
 
 std::vector<Image> render_snapshots(Renderer& renderer, const HandModel& hand,

@@ -75,6 +75,14 @@ void add_contact_overlay(Scene& scene, const std::vector<Contact>& contacts,
                          const Eigen::Isometry3d& X_WO, double object_radius_m,
                          const OverlayStyle& style = {});
 
+/// A planned grasp in the object frame (world = object): the object, the hand at
+/// grasp.X_OB with joints grasp.q (couplings applied), the grasp's contacts and, if given, the
+/// region's cords and points. Caption and ground are left to the caller.
+/// @throws std::invalid_argument when grasp.q does not fit the hand.
+Scene grasp_scene(const HandModel& hand, const HandMeshes& meshes,
+                  std::shared_ptr<const Mesh> object, const Grasp& grasp,
+                  const GraspRegion* region = nullptr, const OverlayStyle& style = {});
+
 /// One picture of a simulation or plan: the hand's world link poses and the object's pose.
 struct SnapshotFrame {
   std::vector<Eigen::Isometry3d> X_WL;  ///< one pose per HandModel link (from link_poses)
