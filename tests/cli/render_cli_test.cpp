@@ -54,6 +54,18 @@ TEST(CliRender, ObjectPictureHasRequestedSize) {
   EXPECT_NE(r.output.find(out), std::string::npos) << r.output;
 }
 
+TEST(CliRender, SeveralObjectsMakeAContactSheetOfTiles) {
+  TempDir dir;
+  const std::string out = (dir.path / "sheet.png").string();
+  const std::string box = test::source_dir() + "/assets/objects/box.obj";
+  const auto r = test::run_cordgrasp("render --object " + quoted(kMug) + " --object " +
+                                     quoted(box) + " --object " + quoted(box) +
+                                     " --size 100x80 --no-caption --out " + quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // 2 columns × 2 rows of 100×80 tiles with 12 px gaps, no caption bands.
+  EXPECT_EQ(png_size(out), std::make_pair(12u + 2u * 112u, 12u + 2u * 92u));
+}
+
 TEST(CliRender, BadSizeIsOneLineErrorNamingIt) {
   TempDir dir;
   const auto r = test::run_cordgrasp("render --object " + quoted(kMug) + " --size 320by200 --out " +
