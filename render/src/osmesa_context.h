@@ -21,6 +21,9 @@ class OsMesaContext {
   /// (reallocated when the size changes). @throws std::runtime_error on failure.
   void make_current(int width_px, int height_px);
 
+  /// Makes the context current on this thread again with its present framebuffer.
+  void make_current() { make_current(width_, height_); }
+
   /// The default framebuffer, bottom row first, RGBA8 (valid after glFinish).
   const std::vector<std::uint8_t>& color_buffer() const { return buffer_; }
 

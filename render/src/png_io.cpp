@@ -5,8 +5,8 @@
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
-#include <vector>
 #include <stdexcept>
+#include <vector>
 
 #include "cordgrasp/core/atomic_file.h"
 #include "cordgrasp/core/error.h"

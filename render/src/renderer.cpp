@@ -379,6 +379,12 @@ struct Renderer::Impl {
   }
 
   ~Impl() {
+    // Another Renderer's context may be current on this thread: delete our objects in ours.
+    try {
+      context.make_current();
+    } catch (...) {
+      return;  // nothing to free safely; destroying the context frees everything anyway
+    }
     for (auto& [key, c] : cache) free_mesh(c.gpu);
     for (GpuMesh* g : {&unit_sphere, &unit_cylinder, &unit_arrow_head, &unit_cone}) free_mesh(*g);
     const GLuint buffers[] = {line_vbo, cap_vbo, ground_vbo};

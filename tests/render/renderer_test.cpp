@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 
 #include "cordgrasp/core/shapes.h"
 #include "cordgrasp/render/backend_info.h"
@@ -247,6 +248,20 @@ TEST(RenderScene, SameSceneRendersIdenticallyTwiceAndAcrossRenderers) {
   EXPECT_EQ(first.rgba, second.rgba);
   Renderer b;
   EXPECT_EQ(b.render(scene, p).rgba, first.rgba);
+}
+
+TEST(RenderScene, DestroyingOneRendererLeavesAnotherIntact) {
+  Scene scene;
+  add_mesh(scene, make_torus_mesh(0.05, 0.015));
+  scene.points.push_back({Eigen::Vector3d(0, 0, 0.02), 0.005, kGreen});
+  const RenderParams p = small_params(160, 120, 1);
+  auto a = std::make_unique<Renderer>();
+  Renderer b;
+  const Image before = b.render(scene, p);
+  a->render(scene, p);  // a's objects get the same GL names as b's
+  b.render(scene, p);   // b is current when a goes away
+  a.reset();
+  EXPECT_EQ(b.render(scene, p).rgba, before.rgba);
 }
 
 TEST(RenderScene, AutoFramingFitsSceneInsideMarginsInEveryView) {
