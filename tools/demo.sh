@@ -9,5 +9,6 @@ out="${1:-$PWD/demo-out}"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j2 --target cordgrasp
 mkdir -p "$out"
+"$build/tools/cordgrasp" info --hand cordgrasp_sah | tee "$out/hand-info.txt"
 "$build/tools/cordgrasp" info --object "$root/assets/objects/mug.obj" | tee "$out/object-info.txt"
 echo "demo: outputs in $out"

@@ -5,8 +5,17 @@
 #include <string>
 
 namespace cordgrasp {
+namespace {
+void check_size(const HandModel& hand, const Eigen::VectorXd& q, const char* who) {
+  if (q.size() != static_cast<Eigen::Index>(hand.joints.size()))
+    throw std::invalid_argument(std::string(who) + ": q has " + std::to_string(q.size()) +
+                                " entries, hand '" + hand.name + "' has " +
+                                std::to_string(hand.joints.size()) + " joints");
+}
+}  // namespace
 
 Eigen::VectorXd apply_couplings(const HandModel& hand, const Eigen::VectorXd& q) {
+  check_size(hand, q, "apply_couplings");
   Eigen::VectorXd out = q;
   // Joints are in topological order, but a mimic master can sit anywhere; masters are never
   // mimic joints themselves (checked at load), so one pass suffices.
@@ -18,6 +27,7 @@ Eigen::VectorXd apply_couplings(const HandModel& hand, const Eigen::VectorXd& q)
 }
 
 Eigen::VectorXd clamp_to_limits(const HandModel& hand, const Eigen::VectorXd& q) {
+  check_size(hand, q, "clamp_to_limits");
   Eigen::VectorXd out = q;
   for (size_t j = 0; j < hand.joints.size(); ++j) {
     const Joint& joint = hand.joints[j];
@@ -47,10 +57,7 @@ Eigen::Isometry3d joint_motion(const Joint& joint, double value) {
 
 std::vector<Eigen::Isometry3d> link_poses(const HandModel& hand, const Eigen::VectorXd& q,
                                           const Eigen::Isometry3d& X_WB) {
-  if (q.size() != static_cast<Eigen::Index>(hand.joints.size()))
-    throw std::invalid_argument("link_poses: q has " + std::to_string(q.size()) +
-                                " entries, hand '" + hand.name + "' has " +
-                                std::to_string(hand.joints.size()) + " joints");
+  check_size(hand, q, "link_poses");
   std::vector<Eigen::Isometry3d> X_WL(hand.links.size(), Eigen::Isometry3d::Identity());
   X_WL[hand.root_link] = X_WB;
   for (size_t j = 0; j < hand.joints.size(); ++j) {

@@ -1,4 +1,4 @@
-// `cordgrasp info`: human or JSON summary of an object mesh.
+// `cordgrasp info`: human or JSON summary of an object mesh or a hand model.
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -10,6 +10,7 @@ namespace {
 
 struct InfoOptions {
   std::string object;
+  std::string hand;
   std::string units = "m";
   bool json = false;
 };
@@ -23,12 +24,23 @@ void add_info_command(CLI::App& app) {
   auto opt = std::make_shared<InfoOptions>();
   CLI::App* cmd = app.add_subcommand("info", "Summarize an object mesh or a hand model");
   cmd->add_option("--object,-o", opt->object, "Object mesh file (OBJ, STL, PLY, OFF, DAE, glTF)");
+  cmd->add_option("--hand", opt->hand,
+                  "Hand description (YAML) or the name of a shipped hand, e.g. cordgrasp_sah");
   cmd->add_option("--units", opt->units, "Units of the object file: m, mm or auto")
       ->check(CLI::IsMember({"m", "mm", "auto"}))
       ->capture_default_str();
   cmd->add_flag("--json", opt->json, "Print machine-readable JSON instead of text");
   cmd->callback([opt]() {
-    if (opt->object.empty()) throw CLI::RequiredError("--object or --hand");
+    if (opt->object.empty() == opt->hand.empty())
+      throw CLI::ValidationError("info", "give exactly one of --object FILE or --hand HAND");
+    if (!opt->hand.empty()) {
+      const nlohmann::json j = hand_info_json(opt->hand);
+      if (opt->json)
+        std::cout << j.dump(2) << '\n';
+      else
+        print_hand_info(j);
+      return;
+    }
     const nlohmann::json j = object_info_json(opt->object, opt->units);
     if (opt->json)
       std::cout << j.dump(2) << '\n';

@@ -8,9 +8,11 @@
 namespace cordgrasp {
 
 /// Sets every mimic joint from its master: q[j] = multiplier·q[master] + offset.
+/// @throws std::invalid_argument when q has the wrong size.
 Eigen::VectorXd apply_couplings(const HandModel& hand, const Eigen::VectorXd& q);
 
 /// Clamps every moving joint to [lower, upper] (continuous joints untouched).
+/// @throws std::invalid_argument when q has the wrong size.
 Eigen::VectorXd clamp_to_limits(const HandModel& hand, const Eigen::VectorXd& q);
 
 /// Forward kinematics: world pose X_WL of every link for joint vector q (one entry per joint)

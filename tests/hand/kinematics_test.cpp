@@ -1,0 +1,113 @@
+// apply_couplings, clamp_to_limits, link_poses, root_pose_for_gcp on the shipped and test hands.
+#include "cordgrasp/core/kinematics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "cordgrasp/core/hand_io.h"
+#include "test_paths.h"
+
+namespace cordgrasp {
+namespace {
+
+constexpr double kTol = 1e-12;
+constexpr double kPosTol_m = 1e-9;
+
+TEST(ApplyCouplings, SetsEveryMimicJointFromItsMaster) {
+  const HandModel h = load_hand("cordgrasp_sah");
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(h.joints.size()));
+  q[find_joint(h, "index_middle")] = 0.8;
+  q[find_joint(h, "index_distal")] = -3.0;  // overwritten
+  q[find_joint(h, "thumb_middle")] = 0.3;
+  const Eigen::VectorXd out = apply_couplings(h, q);
+  EXPECT_DOUBLE_EQ(out[find_joint(h, "index_distal")], 0.8);
+  EXPECT_DOUBLE_EQ(out[find_joint(h, "thumb_distal")], 0.3);
+  EXPECT_DOUBLE_EQ(out[find_joint(h, "ring_distal")], 0.0);
+  for (size_t j = 0; j < h.joints.size(); ++j) {
+    if (!h.joints[j].mimic) {
+      EXPECT_EQ(out[j], q[j]) << h.joints[j].name;
+    }
+  }
+}
+
+TEST(ApplyCouplings, UsesMultiplierAndOffset) {
+  const HandModel h = load_hand(test::test_data("hands/features/features.yaml"));
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(h.joints.size()));
+  q[find_joint(h, "slide")] = 0.01;
+  EXPECT_NEAR(apply_couplings(h, q)[find_joint(h, "slide mirror")], 0.011, kTol);
+}
+
+TEST(ClampToLimits, ClampsRevoluteAndPrismaticLeavesContinuousAndFixed) {
+  const HandModel h = load_hand(test::test_data("hands/features/features.yaml"));
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(h.joints.size()));
+  q[find_joint(h, "slide")] = 0.2;
+  q[find_joint(h, "slide mirror")] = -0.1;
+  q[find_joint(h, "wrist roll")] = 12.0;
+  const Eigen::VectorXd out = clamp_to_limits(h, q);
+  EXPECT_DOUBLE_EQ(out[find_joint(h, "slide")], 0.05);
+  EXPECT_DOUBLE_EQ(out[find_joint(h, "slide mirror")], 0.0);
+  EXPECT_DOUBLE_EQ(out[find_joint(h, "wrist roll")], 12.0);
+  const HandModel sah = load_hand("cordgrasp_sah");
+  Eigen::VectorXd qs = Eigen::VectorXd::Constant(static_cast<Eigen::Index>(sah.joints.size()), 9.0);
+  const Eigen::VectorXd outs = clamp_to_limits(sah, qs);
+  for (size_t j = 0; j < sah.joints.size(); ++j) {
+    if (sah.joints[j].is_moving()) {
+      EXPECT_DOUBLE_EQ(outs[j], sah.joints[j].upper);
+    }
+  }
+}
+
+TEST(Kinematics, WrongSizedJointVectorThrows) {
+  const HandModel h = load_hand(test::test_data("hands/two_link/two_link.yaml"));
+  const Eigen::VectorXd q = Eigen::VectorXd::Zero(2);
+  EXPECT_THROW(link_poses(h, q), std::invalid_argument);
+  EXPECT_THROW(apply_couplings(h, q), std::invalid_argument);
+  EXPECT_THROW(clamp_to_limits(h, q), std::invalid_argument);
+}
+
+TEST(Kinematics, RootPoseMovesTheWholeHandRigidly) {
+  const HandModel h = load_hand("cordgrasp_sah");
+  const Eigen::VectorXd q = apply_couplings(h, h.preshape);
+  Eigen::Isometry3d X_WB = Eigen::Isometry3d::Identity();
+  X_WB.rotate(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()));
+  X_WB.pretranslate(Eigen::Vector3d(0.3, -0.2, 0.5));
+  const auto X0 = link_poses(h, q);
+  const auto X1 = link_poses(h, q, X_WB);
+  for (size_t l = 0; l < h.links.size(); ++l)
+    EXPECT_TRUE((X_WB * X0[l]).isApprox(X1[l], 1e-12)) << h.links[l].name;
+}
+
+TEST(Kinematics, RootPoseForGcpPutsTheGcpOnTarget) {
+  const HandModel h = load_hand("cordgrasp_sah");
+  const Eigen::VectorXd q = apply_couplings(h, h.preshape);
+  Eigen::Isometry3d X_WG = Eigen::Isometry3d::Identity();
+  X_WG.rotate(Eigen::AngleAxisd(-1.1, Eigen::Vector3d(0.2, -1, 0.4).normalized()));
+  X_WG.pretranslate(Eigen::Vector3d(0.05, 0.1, -0.2));
+  const Eigen::Isometry3d X_WB = root_pose_for_gcp(h, q, X_WG);
+  const Eigen::Isometry3d got = gcp_pose(h, link_poses(h, q, X_WB));
+  EXPECT_LT((got.translation() - X_WG.translation()).norm(), kPosTol_m);
+  EXPECT_LT((got.linear() - X_WG.linear()).norm(), 1e-9);
+}
+
+TEST(Kinematics, RevoluteJointRotatesItsChildAboutTheAxis) {
+  const HandModel h = load_hand("cordgrasp_sah");
+  Eigen::VectorXd q = apply_couplings(h, h.preshape);
+  const int j = find_joint(h, "middle_proximal");
+  const Joint& joint = h.joints[j];
+  const auto X0 = link_poses(h, q);
+  q[j] += 0.5;
+  const auto X1 = link_poses(h, q);
+  const Eigen::Isometry3d X_WJ = X0[joint.parent_link] * joint.X_PJ;
+  // Points on the axis stay; the child frame turns by 0.5 rad about it.
+  EXPECT_TRUE(X1[joint.child_link].translation().isApprox(X0[joint.child_link].translation()));
+  const Eigen::Matrix3d dR =
+      X1[joint.child_link].linear() * X0[joint.child_link].linear().transpose();
+  const Eigen::AngleAxisd aa(dR);
+  EXPECT_NEAR(aa.angle(), 0.5, 1e-12);
+  EXPECT_TRUE(aa.axis().isApprox(X_WJ.linear() * joint.axis, 1e-9));
+}
+
+}  // namespace
+}  // namespace cordgrasp
