@@ -142,18 +142,20 @@ Camera frame_points(const std::vector<Eigen::Vector3d>& p_W, const ViewSpec& spe
   // extreme rays are symmetric, max (c − x)/(z − cz) = max (x − c)/(z − cz), by bisection
   // (the difference is increasing in c).
   const auto recentre = [&](const Eigen::Vector3d& axis, double& c) {
+    std::vector<double> x(p_W.size()), inv_depth(p_W.size());
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const auto& p : p_W) {
-      lo = std::min(lo, axis.dot(p));
-      hi = std::max(hi, axis.dot(p));
+    for (size_t i = 0; i < p_W.size(); ++i) {
+      x[i] = axis.dot(p_W[i]);
+      inv_depth[i] = 1.0 / (f.dot(p_W[i]) - cz);
+      lo = std::min(lo, x[i]);
+      hi = std::max(hi, x[i]);
     }
     for (int it = 0; it < 60 && hi - lo > 1e-12 * (1.0 + std::abs(hi)); ++it) {
       const double mid = 0.5 * (lo + hi);
       double left = -std::numeric_limits<double>::infinity(), right = left;
-      for (const auto& p : p_W) {
-        const double depth = f.dot(p) - cz, x = axis.dot(p);
-        left = std::max(left, (mid - x) / depth);
-        right = std::max(right, (x - mid) / depth);
+      for (size_t i = 0; i < x.size(); ++i) {
+        left = std::max(left, (mid - x[i]) * inv_depth[i]);
+        right = std::max(right, (x[i] - mid) * inv_depth[i]);
       }
       (left < right ? lo : hi) = mid;
     }

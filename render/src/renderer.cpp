@@ -800,18 +800,26 @@ Image Renderer::Impl::render(const Scene& scene, const RenderParams& params, Ren
     draw_translucent(on_top);
   }
 
-  // Resolve into the OSMesa framebuffer at output resolution.
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, W, H);
-  glDisable(GL_DEPTH_TEST);
-  resolve_program.use();
-  resolve_program.set("u_image", 0);
-  resolve_program.set("u_factor", fr.factor);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, fbo_color);
-  glBindVertexArray(empty_vao);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
+  // Resolve into the OSMesa framebuffer at output resolution (a plain copy without
+  // supersampling).
+  if (fr.factor == 1) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, W, H, 0, 0, W, H, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  } else {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, W, H);
+    glDisable(GL_DEPTH_TEST);
+    resolve_program.use();
+    resolve_program.set("u_image", 0);
+    resolve_program.set("u_factor", fr.factor);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, fbo_color);
+    glBindVertexArray(empty_vao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+  }
   glFinish();
   check_gl("rendering");
 

@@ -66,6 +66,34 @@ TEST(CliRender, SeveralObjectsMakeAContactSheetOfTiles) {
   EXPECT_EQ(png_size(out), std::make_pair(12u + 2u * 112u, 12u + 2u * 92u));
 }
 
+TEST(CliRender, HandPictureAtAClosingFractionAndJointValue) {
+  TempDir dir;
+  const std::string out = (dir.path / "hand.png").string();
+  const auto r = test::run_cordgrasp(
+      "render --hand cordgrasp_sah --close 0.5 --joint index_abduction=0.2 --collision "
+      "--view approach --size 160x120 --out " +
+      quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(png_size(out), std::make_pair(160u, 120u));
+}
+
+TEST(CliRender, HandOptionErrorsNameTheProblem) {
+  TempDir dir;
+  const std::string out = quoted((dir.path / "x.png").string());
+  auto r = test::run_cordgrasp("render --hand cordgrasp_sah --joint no_such_joint=1 --out " + out);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("no joint 'no_such_joint'"), std::string::npos) << r.output;
+  r = test::run_cordgrasp("render --hand cordgrasp_sah --joint index_proximal --out " + out);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("NAME=VALUE"), std::string::npos) << r.output;
+  r = test::run_cordgrasp("render --hand cordgrasp_sah --no-visual --out " + out);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("--collision"), std::string::npos) << r.output;
+  r = test::run_cordgrasp("render --hand cordgrasp_sah --object " + quoted(kMug) + " --out " + out);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_FALSE(fs::exists(dir.path / "x.png"));
+}
+
 TEST(CliRender, BadSizeIsOneLineErrorNamingIt) {
   TempDir dir;
   const auto r = test::run_cordgrasp("render --object " + quoted(kMug) + " --size 320by200 --out " +

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "cordgrasp/core/hand_fingers.h"
+#include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/shapes.h"
 #include "image_stats.h"
@@ -78,6 +80,38 @@ TEST(HandLinkColors, PalmGreyThumbFirstPaletteColourAndMimicFollowsMaster) {
   HandModel swapped = hand;
   std::swap(swapped.actors[0], swapped.actors[1]);
   EXPECT_NEAR((hand_link_colors(swapped)[1] - c[1]).norm(), 0.0, kColorTol);
+}
+
+TEST(HandLinkColors, ShippedHandsHaveOneColourPerFinger) {
+  for (const char* name : {"cordgrasp_sah", "parallel_gripper"}) {
+    SCOPED_TRACE(name);
+    const HandModel hand = load_hand(name);
+    const auto colors = hand_link_colors(hand);
+    const auto fingers = hand_fingers(hand);
+    ASSERT_GE(fingers.size(), 2u);
+    std::vector<Rgba> finger_colors;
+    for (const Finger& f : fingers) {
+      for (int l : f.links) EXPECT_NEAR((colors[l] - colors[f.links[0]]).norm(), 0.0, kColorTol);
+      for (const Rgba& other : finger_colors) EXPECT_GT((other - colors[f.links[0]]).norm(), 0.2);
+      finger_colors.push_back(colors[f.links[0]]);
+    }
+    const Rgba palm = colors[hand.root_link];
+    for (const Rgba& c : finger_colors) EXPECT_GT((c - palm).norm(), 0.2);
+  }
+}
+
+TEST(ClosingConfiguration, MovesActorJointsTowardTheirClosingLimits) {
+  const HandModel hand = load_hand("cordgrasp_sah");
+  const Eigen::VectorXd open = closing_configuration(hand, 0.0);
+  const Eigen::VectorXd closed = closing_configuration(hand, 1.0);
+  EXPECT_TRUE(open.isApprox(clamp_to_limits(hand, apply_couplings(hand, hand.preshape))));
+  for (const Actor& a : hand.actors)
+    for (const Actor::Entry& e : a.joints)
+      EXPECT_DOUBLE_EQ(closed[e.joint], e.direction_speed > 0 ? hand.joints[e.joint].upper
+                                                              : hand.joints[e.joint].lower);
+  const int distal = find_joint(hand, "index_distal");  // coupled to index_middle
+  ASSERT_GE(distal, 0);
+  EXPECT_DOUBLE_EQ(closed[distal], closed[find_joint(hand, "index_middle")]);
 }
 
 TEST(MakeHandMeshes, VisualOpaqueCollisionTranslucentOverIt) {

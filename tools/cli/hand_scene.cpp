@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "cordgrasp/core/hand_fingers.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/shapes.h"
@@ -43,38 +44,30 @@ Rgba lerp(const Rgba& a, const Rgba& b, double t) { return a + t * (b - a); }
 }  // namespace
 
 std::vector<Rgba> hand_link_colors(const HandModel& hand) {
-  const size_t n_links = hand.links.size(), n_joints = hand.joints.size();
-  std::vector<Rgba> rgba(n_links, kPalm);
-  std::vector<int> owner(n_links, -1);  // actor moving each link
-  for (size_t a = 0; a < hand.actors.size(); ++a) {
-    std::vector<bool> driven(n_joints, false);
-    for (const auto& e : hand.actors[a].joints)
-      if (e.joint >= 0 && e.joint < static_cast<int>(n_joints)) driven[e.joint] = true;
-    for (size_t j = 0; j < n_joints; ++j)
-      if (hand.joints[j].mimic && hand.joints[j].mimic->master_joint >= 0 &&
-          driven[hand.joints[j].mimic->master_joint])
-        driven[j] = true;
-    std::vector<bool> moved(n_links, false);
-    for (size_t j = 0; j < n_joints; ++j) {  // topological order: one pass
-      const Joint& joint = hand.joints[j];
-      if (joint.child_link < 0 || joint.parent_link < 0) continue;
-      if (driven[j] || moved[joint.parent_link]) moved[joint.child_link] = true;
-    }
-    for (size_t l = 0; l < n_links; ++l)
-      if (moved[l] && owner[l] < 0) owner[l] = static_cast<int>(a);
-  }
-  // Thumb's actor first in the palette, the others in actor order.
-  int thumb_actor = -1;
-  for (int l : hand.thumb_links)
-    if (l >= 0 && l < static_cast<int>(n_links) && owner[l] >= 0) thumb_actor = owner[l];
-  std::vector<int> slot(hand.actors.size(), 0);
-  int next = thumb_actor >= 0 ? 1 : 0;
-  for (size_t a = 0; a < hand.actors.size(); ++a)
-    slot[a] = static_cast<int>(a) == thumb_actor ? 0 : next++;
+  std::vector<Rgba> rgba(hand.links.size(), kPalm);
+  std::vector<Finger> fingers = hand_fingers(hand);
+  // The thumb takes the first palette colour, the other fingers follow in actor order.
+  std::stable_partition(fingers.begin(), fingers.end(), [](const Finger& f) { return f.is_thumb; });
   constexpr int kPaletteSize = sizeof(kFingerPalette) / sizeof(kFingerPalette[0]);
-  for (size_t l = 0; l < n_links; ++l)
-    if (owner[l] >= 0) rgba[l] = kFingerPalette[slot[owner[l]] % kPaletteSize];
+  for (size_t i = 0; i < fingers.size(); ++i)
+    for (int l : fingers[i].links)
+      if (l >= 0 && l < static_cast<int>(rgba.size())) rgba[l] = kFingerPalette[i % kPaletteSize];
   return rgba;
+}
+
+Eigen::VectorXd closing_configuration(const HandModel& hand, double fraction) {
+  Eigen::VectorXd q = hand.preshape.size() == static_cast<Eigen::Index>(hand.joints.size())
+                          ? hand.preshape
+                          : Eigen::VectorXd::Zero(static_cast<Eigen::Index>(hand.joints.size()));
+  const Eigen::VectorXd q0 = q;
+  for (const Actor& actor : hand.actors)
+    for (const Actor::Entry& e : actor.joints) {
+      if (e.joint < 0 || e.joint >= static_cast<int>(hand.joints.size())) continue;
+      const Joint& j = hand.joints[e.joint];
+      const double limit = e.direction_speed >= 0.0 ? j.upper : j.lower;
+      if (std::isfinite(limit)) q[e.joint] = q0[e.joint] + fraction * (limit - q0[e.joint]);
+    }
+  return clamp_to_limits(hand, apply_couplings(hand, q));
 }
 
 HandMeshes make_hand_meshes(const HandModel& hand, const HandStyle& style) {

@@ -22,9 +22,15 @@ struct HandStyle {
   double collision_alpha = 0.35;  ///< opacity of collision shapes drawn over visual geometry
 };
 
-/// Colour of each link: one colour per finger (the links an actor moves), the thumb's first;
-/// palm and other unactuated links dark slate grey.
+/// Colour of each link: one colour per finger (hand_fingers: the links an actor moves), the
+/// thumb's first; palm and other unactuated links dark slate grey.
 std::vector<Rgba> hand_link_colors(const HandModel& hand);
+
+/// Joint vector between the preshape (0) and every actor joint at the limit it closes toward
+/// (1): q = preshape + fraction · (limit − preshape), the limit being the upper one for a
+/// positive actor speed, the lower one otherwise; couplings applied, clamped to limits.
+/// For pictures of hands, not a grasp (no contact is sought).
+Eigen::VectorXd closing_configuration(const HandModel& hand, double fraction);
 
 /// Render-ready meshes of a hand's geometry: primitives tessellated once, meshes shared, so
 /// many frames of one hand reuse the renderer's GPU copies.
