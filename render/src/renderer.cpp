@@ -216,6 +216,46 @@ void blur_mask(std::vector<float>& m, int n, int r) {
   }
 }
 
+// Items with non-finite coordinates (e.g. a physics blow-up) cannot be drawn or framed:
+// the scene without them, and how many were dropped.
+bool finite(const Eigen::Isometry3d& X) { return X.matrix().allFinite(); }
+
+Scene finite_part(const Scene& scene, int& dropped) {
+  dropped = 0;
+  const auto keep = [&dropped](bool ok) {
+    dropped += !ok;
+    return ok;
+  };
+  Scene out = scene;
+  out.meshes.clear();
+  for (const SceneMesh& m : scene.meshes) {
+    bool ok = finite(m.X_WM) && m.rgba.allFinite();
+    if (ok && m.mesh)
+      for (const auto& v : m.mesh->vertices) ok = ok && v.allFinite();
+    if (keep(ok)) out.meshes.push_back(m);
+  }
+  out.polylines.clear();
+  for (const ScenePolyline& l : scene.polylines) {
+    bool ok = std::isfinite(l.width_px);
+    for (const auto& p : l.p_W) ok = ok && p.allFinite();
+    if (keep(ok)) out.polylines.push_back(l);
+  }
+  out.points.clear();
+  for (const ScenePoint& p : scene.points)
+    if (keep(p.p_W.allFinite() && std::isfinite(p.radius_m))) out.points.push_back(p);
+  out.arrows.clear();
+  for (const SceneArrow& a : scene.arrows)
+    if (keep(a.p_W.allFinite() && a.direction_W.allFinite() && std::isfinite(a.length_m) &&
+             std::isfinite(a.shaft_radius_m)))
+      out.arrows.push_back(a);
+  out.cones.clear();
+  for (const SceneCone& c : scene.cones)
+    if (keep(c.apex_W.allFinite() && c.axis_W.allFinite() && std::isfinite(c.height_m) &&
+             std::isfinite(c.half_angle_rad)))
+      out.cones.push_back(c);
+  return out;
+}
+
 // Caption band under the 3D view (final resolution).
 struct CaptionLayout {
   int lines = 0;
@@ -495,7 +535,9 @@ struct Frame {
 
 }  // namespace
 
-Image Renderer::Impl::render(const Scene& scene, const RenderParams& params, RenderInfo* info) {
+Image Renderer::Impl::render(const Scene& input, const RenderParams& params, RenderInfo* info) {
+  int dropped = 0;
+  const Scene scene = finite_part(input, dropped);
   if (params.width_px < 1 || params.width_px > kMaxSizePx || params.height_px < 1 ||
       params.height_px > kMaxSizePx)
     throw std::invalid_argument("render: image size " + std::to_string(params.width_px) + "x" +
@@ -845,6 +887,7 @@ Image Renderer::Impl::render(const Scene& scene, const RenderParams& params, Ren
     info->view_width_px = W;
     info->view_height_px = H;
     info->caption_drawn = caption_drawn;
+    info->dropped_items = dropped;
   }
   return image;
 }

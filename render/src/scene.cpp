@@ -1,5 +1,6 @@
 #include "cordgrasp/render/scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cordgrasp {
@@ -62,6 +63,9 @@ std::vector<Eigen::Vector3d> scene_extent_points(const Scene& scene) {
       p.push_back(c.apex_W + c.height_m * axis + r * (std::cos(t) * a + std::sin(t) * b));
     }
   }
+  p.erase(
+      std::remove_if(p.begin(), p.end(), [](const Eigen::Vector3d& q) { return !q.allFinite(); }),
+      p.end());
   return p;
 }
 

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 
 #include "cordgrasp/core/shapes.h"
@@ -398,6 +399,26 @@ TEST(RenderCaption, MissingFontRendersWithoutCaption) {
   EXPECT_FALSE(info.caption_drawn);
   EXPECT_EQ(info.view_height_px, 120);
   EXPECT_EQ(image.height, 120);
+}
+
+TEST(RenderScene, LeavesOutNonFiniteItemsAndFramesTheRest) {
+  Scene scene = unit_cube_scene();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  Eigen::Isometry3d X_bad = Eigen::Isometry3d::Identity();
+  X_bad.translation().x() = nan;
+  add_mesh(scene, make_box_mesh(Eigen::Vector3d::Ones()), X_bad);
+  scene.points.push_back({Eigen::Vector3d(nan, 0, 0), 0.1, kGreen});
+  ScenePolyline line;
+  line.p_W = {{0, 0, 0}, {std::numeric_limits<double>::infinity(), 0, 0}};
+  scene.polylines.push_back(line);
+  RenderParams p = small_params(160, 120, 1);
+  p.view.view = View::kFront;
+  RenderInfo info;
+  Renderer renderer;
+  const Image image = renderer.render(scene, p, &info);
+  EXPECT_EQ(info.dropped_items, 3);
+  const Image clean = renderer.render(unit_cube_scene(), p);
+  EXPECT_EQ(image.rgba, clean.rgba);
 }
 
 TEST(RenderScene, EmptySceneGivesBackgroundImage) {

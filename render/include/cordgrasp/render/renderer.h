@@ -30,6 +30,7 @@ struct RenderInfo {
   int view_width_px = 0;   ///< [px]
   int view_height_px = 0;  ///< [px]
   bool caption_drawn = false;
+  int dropped_items = 0;    ///< scene items left out for non-finite coordinates
 };
 
 /// Offscreen OpenGL renderer (OSMesa, software). Owns one GL context; keeps GPU copies of the
@@ -44,6 +45,7 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
 
   /// Renders `scene`; fills `info` if given. Same scene and params give identical bytes.
+  /// Items with non-finite coordinates are left out (counted in RenderInfo::dropped_items).
   /// @throws std::invalid_argument for sizes outside [1, 8192] px or supersample outside [1, 4].
   Image render(const Scene& scene, const RenderParams& params, RenderInfo* info = nullptr);
 

@@ -101,7 +101,7 @@ SceneMesh& add_mesh(Scene& scene, std::shared_ptr<const Mesh> mesh,
                     Shading shading = Shading::kSmooth);
 
 /// Every point the picture must contain: mesh vertices, polyline vertices, sphere, arrow and
-/// cone extents, in world [m]. Used for auto-framing.
+/// cone extents, in world [m]; non-finite points are skipped. Used for auto-framing.
 std::vector<Eigen::Vector3d> scene_extent_points(const Scene& scene);
 
 /// Total number of mesh triangles in the scene (meshes only).
