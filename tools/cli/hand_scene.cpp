@@ -89,7 +89,13 @@ HandMeshes make_hand_meshes(const HandModel& hand, const HandStyle& style) {
       }
     };
     if (style.visual) add(link.visuals, 1.0);
-    if (style.collision) add(link.collisions, style.visual ? style.collision_alpha : 1.0);
+    if (style.collision) {
+      const size_t first = out.parts.size();
+      add(link.collisions, style.visual ? style.collision_alpha : 1.0);
+      if (style.visual)  // a distinct translucent tint over the link colours
+        for (size_t i = first; i < out.parts.size(); ++i)
+          out.parts[i].rgba.head<3>() = Eigen::Vector3d(0.35, 0.85, 0.95);
+    }
   }
   return out;
 }
