@@ -3,10 +3,14 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
+#include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_fingers.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/shapes.h"
+#include "cordgrasp/render/png_io.h"
 #include "image_stats.h"
 
 namespace cordgrasp::cli {
@@ -277,6 +281,43 @@ TEST(RenderSnapshots, OneCameraForAllFramesSoStillThingsStayStill) {
     EXPECT_NEAR(hand_px[i].centroid.y(), hand_px[0].centroid.y(), 0.5);
     EXPECT_LT(object_px[i].centroid.y(), object_px[i - 1].centroid.y() - 3.0);  // rises
   }
+}
+
+}  // namespace
+}  // namespace cordgrasp::cli
+
+namespace cordgrasp::cli {
+namespace {
+
+TEST(WriteSnapshots, OnePngPerFrameNamedByStemAndPhase) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "cordgrasp_write_snapshots_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const HandModel hand = toy_hand();
+  const auto X_WL = link_poses(hand, Eigen::VectorXd::Zero(4));
+  std::vector<SnapshotFrame> frames(2);
+  frames[0].X_WL = frames[1].X_WL = X_WL;
+  frames[0].name = "settled";
+  Renderer renderer;
+  RenderParams params;
+  params.width_px = 64;
+  params.height_px = 48;
+  params.supersample = 1;
+  const auto paths =
+      write_snapshots(renderer, hand, nullptr, frames, dir.string(), "grasp3", params);
+  ASSERT_EQ(paths.size(), 2u);
+  EXPECT_EQ(fs::path(paths[0]).filename(), "grasp3_settled.png");
+  EXPECT_EQ(fs::path(paths[1]).filename(), "grasp3_1.png");
+  for (const auto& p : paths) {
+    const Image image = read_png(p);
+    EXPECT_EQ(image.width, 64);
+    EXPECT_EQ(image.height, 48);
+  }
+  EXPECT_THROW(
+      write_snapshots(renderer, hand, nullptr, frames, (dir / "missing").string(), "g", params),
+      InputError);
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <stdexcept>
 
+#include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_fingers.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/shapes.h"
+#include "cordgrasp/render/png_io.h"
 
 namespace cordgrasp::cli {
 namespace {
@@ -215,6 +218,24 @@ std::vector<Image> render_snapshots(Renderer& renderer, const HandModel& hand,
   std::vector<Image> images;
   for (const Scene& s : scenes) images.push_back(renderer.render(s, p));
   return images;
+}
+
+std::vector<std::string> write_snapshots(Renderer& renderer, const HandModel& hand,
+                                         std::shared_ptr<const Mesh> object,
+                                         const std::vector<SnapshotFrame>& frames,
+                                         const std::string& dir, const std::string& stem,
+                                         const RenderParams& params, const HandStyle& style) {
+  namespace fs = std::filesystem;
+  if (!fs::is_directory(dir)) throw InputError("snapshots: '" + dir + "' is not a directory");
+  const std::vector<Image> images =
+      render_snapshots(renderer, hand, std::move(object), frames, params, style);
+  std::vector<std::string> paths;
+  for (size_t i = 0; i < images.size(); ++i) {
+    const std::string name = frames[i].name.empty() ? std::to_string(i) : frames[i].name;
+    paths.push_back((fs::path(dir) / (stem + "_" + name + ".png")).string());
+    write_png(paths.back(), images[i]);
+  }
+  return paths;
 }
 
 }  // namespace cordgrasp::cli

@@ -94,6 +94,7 @@ struct SnapshotFrame {
   std::vector<Eigen::Isometry3d> X_WL;  ///< one pose per HandModel link (from link_poses)
   Eigen::Isometry3d X_WO = Eigen::Isometry3d::Identity();
   std::string caption;  ///< e.g. "settled · mug · schunk_sah"
+  std::string name;     ///< file name part, e.g. "settled" (write_snapshots)
 };
 
 /// Renders each frame of one hand and object with a single camera framed on all frames
@@ -103,5 +104,14 @@ std::vector<Image> render_snapshots(Renderer& renderer, const HandModel& hand,
                                     std::shared_ptr<const Mesh> object,
                                     const std::vector<SnapshotFrame>& frames,
                                     const RenderParams& params, const HandStyle& style = {});
+
+/// render_snapshots, then writes frame i to <dir>/<stem>_<frames[i].name>.png (or
+/// <stem>_<i>.png when the name is empty), atomically; returns the paths in frame order.
+/// @throws InputError when `dir` does not exist or a file cannot be written.
+std::vector<std::string> write_snapshots(Renderer& renderer, const HandModel& hand,
+                                         std::shared_ptr<const Mesh> object,
+                                         const std::vector<SnapshotFrame>& frames,
+                                         const std::string& dir, const std::string& stem,
+                                         const RenderParams& params, const HandStyle& style = {});
 
 }  // namespace cordgrasp::cli
