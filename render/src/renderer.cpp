@@ -99,12 +99,21 @@ class Program {
 struct GpuMesh {
   GLuint vao = 0, vbo = 0;
   GLsizei vertex_count = 0;
+  Eigen::Vector3d center_M = Eigen::Vector3d::Zero();  // bounding-box centre, mesh frame
 };
 
 GpuMesh upload_mesh(const Mesh& mesh, double crease_angle_rad) {
   const std::vector<float> data = render_detail::smooth_vertex_array(mesh, crease_angle_rad);
   GpuMesh g;
   g.vertex_count = static_cast<GLsizei>(data.size() / 6);
+  if (!mesh.vertices.empty()) {
+    Eigen::Vector3d lo = mesh.vertices[0], hi = lo;
+    for (const auto& v : mesh.vertices) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+    g.center_M = 0.5 * (lo + hi);
+  }
   glGenVertexArrays(1, &g.vao);
   glGenBuffers(1, &g.vbo);
   glBindVertexArray(g.vao);
@@ -759,6 +768,24 @@ Image Renderer::Impl::render(const Scene& input, const RenderParams& params, Ren
   glDisable(GL_CULL_FACE);
   glEnable(GL_PROGRAM_POINT_SIZE);
 
+  // Opaque meshes near to far (hidden fragments then fail the depth test before shading),
+  // translucent ones far to near (better blending). Stable: ties keep scene order.
+  {
+    std::vector<double> depth(items.size());
+    for (size_t i = 0; i < items.size(); ++i)
+      depth[i] = -(fr.view * items[i].X_WM * items[i].gpu->center_M.homogeneous()).z();
+    std::vector<size_t> order(items.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+      const bool ta = items[a].rgba[3] < 1.0, tb = items[b].rgba[3] < 1.0;
+      if (ta != tb) return !ta;
+      return ta ? depth[a] > depth[b] : depth[a] < depth[b];
+    });
+    std::vector<DrawItem> sorted;
+    sorted.reserve(items.size());
+    for (size_t i : order) sorted.push_back(items[i]);
+    items.swap(sorted);
+  }
   const Eigen::Matrix4f view_f = to_float(fr.view), proj_f = to_float(fr.proj);
   const auto draw_meshes = [&](bool on_top, bool translucent) {
     mesh_program.use();
