@@ -15,7 +15,7 @@ struct PictureOptions {
   std::string view = "iso";       ///< iso, front, side, top, approach
   std::string approach;           ///< "x,y,z": viewing direction for --view approach
   std::string size = "1024x768";  ///< WxH [px]
-  int supersample = 3;            ///< anti-aliasing factor, 1..4
+  int supersample = 2;            ///< anti-aliasing factor, 1..4
   std::string ground = "shadow";  ///< shadow, grid, none
   std::string caption;            ///< replaces the default caption
   bool no_caption = false;

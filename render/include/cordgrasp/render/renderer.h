@@ -14,7 +14,7 @@ namespace cordgrasp {
 struct RenderParams {
   int width_px = 1024;  ///< output width [px]
   int height_px = 768;  ///< output height [px], caption band included
-  int supersample = 3;  ///< anti-aliasing: render at this factor, box-filter down (1 = off)
+  int supersample = 2;  ///< anti-aliasing: render at this factor, box-filter down (1 = off)
   ViewSpec view;        ///< auto-framing on the scene bounds (ignored when `camera` is set)
   std::optional<Camera> camera;  ///< explicit camera instead of auto-framing
   Rgba background = Rgba(1.0, 1.0, 1.0, 1.0);
