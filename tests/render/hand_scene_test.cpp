@@ -9,9 +9,11 @@
 #include "cordgrasp/core/hand_fingers.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
+#include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/shapes.h"
 #include "cordgrasp/render/png_io.h"
 #include "image_stats.h"
+#include "test_paths.h"
 
 namespace cordgrasp::cli {
 namespace {
@@ -288,6 +290,38 @@ TEST(RenderSnapshots, OneCameraForAllFramesSoStillThingsStayStill) {
 
 namespace cordgrasp::cli {
 namespace {
+
+// The default hand placed by hand around the shipped mug (a synthetic grasp, not a plan):
+// the picture shows both the fingers' colours and the object's grey.
+TEST(GraspScene, DefaultHandOnMugShowsHandAndObjectColours) {
+  const HandModel hand = load_hand(default_hand_name());
+  const auto mug =
+      std::make_shared<const Mesh>(load_mesh(test::source_dir() + "/assets/objects/mug.obj"));
+  Grasp grasp;
+  grasp.q = closing_configuration(hand, 0.4);
+  Eigen::Isometry3d X_OG = Eigen::Isometry3d::Identity();  // approach along +y, at mid height
+  X_OG.linear() << 1, 0, 0, 0, 0, 1, 0, -1, 0;
+  X_OG.translation() = Eigen::Vector3d(0.0, -0.06, 0.05);
+  grasp.X_OG = X_OG;
+  grasp.X_OB = root_pose_for_gcp(hand, grasp.q, X_OG);
+  Scene scene = grasp_scene(hand, make_hand_meshes(hand), mug, grasp);
+  scene.ground = Ground::kShadow;
+  Renderer renderer;
+  RenderParams params;
+  params.width_px = 320;
+  params.height_px = 240;
+  const Image image = renderer.render(scene, params);
+  test::save_for_inspection(image, "default_hand_on_mug");
+  const auto colors = hand_link_colors(hand);
+  int finger_px = 0;
+  for (const Finger& f : hand_fingers(hand)) finger_px += pixels_of_hue(image, colors[f.links[0]]);
+  EXPECT_GT(finger_px, 300);
+  const Eigen::Vector3d grey = object_color().head<3>();
+  const int object_px = test::select_pixels(image, [](int r, int g, int b) {
+                          return std::abs(r - g) <= 2 && std::abs(g - b) <= 2 && r > 60 && r < 240;
+                        }).count;
+  EXPECT_GT(object_px, 1000) << grey.transpose();
+}
 
 TEST(WriteSnapshots, OnePngPerFrameNamedByStemAndPhase) {
   namespace fs = std::filesystem;
