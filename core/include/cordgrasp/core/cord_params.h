@@ -1,0 +1,75 @@
+#pragma once
+#include <cstdint>
+
+namespace cordgrasp {
+
+/// Point set used for Φ1, Φ2, Φ3 on the sampling spheres (spec §5).
+enum class SphereSequence {
+  kYershovaLaValle,  ///< Lindemann–LaValle lattice on the 6 cube faces, spherical bilinear map
+  kFibonacci,        ///< golden-angle spiral; the acceptable substitute named by spec §5
+};
+
+/// How front_cord() builds cords once the guide triangle is known to be free (spec §2.4, §3).
+enum class CordConstruction {
+  kHullChain,  ///< exact equivalent of TIGHTEN for the convex, free guides of §3: P_l, P_r by
+               ///< TIGHTEN's first-event rule, front cord = convex-hull chain P_r→P_l
+               ///< (O(k log k); collinear cord points dropped). Falls back to kTighten when
+               ///< P_l or P_r is not a strict hull vertex.
+  kTighten,    ///< TIGHTEN of spec §2.4 on all candidates (O(k·h)), both Case I steps
+};
+
+/// How χ (spec §6) intersects the projected front-cord polygons.
+enum class XorBackend {
+  kClipper,  ///< Clipper 6.4.2 integer XOR (spec §6 call sequence), scale `clipper_scale`
+  kConvex,   ///< exact convex clipping: A(P)+A(Q)−2A(P∩Q), valid as every Q_i is convex
+};
+
+/// Every number of the exploration stage (spec §1–§6) with its default and unit.
+struct CordParams {
+  // §1 spheres
+  double r2_margin_m = 0.005;  ///< r2 = r + this (spec §1 resolution) [m]
+  double delta_r_m = 0.10;     ///< r1 = r2 + Δr [m]
+
+  // §2 cord generation
+  double eps_len_m = 1e-9;         ///< TIGHTEN length tolerance eps_len (spec §2.4) [m]
+  double eps_area_rel = 1e-14;     ///< TIGHTEN eps_a = eps_area_rel · r² (spec §2.4) [1]
+  double barycentric_tol = 1e-12;  ///< closed-triangle test: barycentric ≥ −tol (spec §2.4) [1]
+  double dedup_m = 1e-7;           ///< cord points closer than this are merged (spec §2.4) [m]
+  double min_grasp_gap_m = 1e-3;   ///< FAIL when ‖P_l − P_r‖ is below this (spec §2.6) [m]
+  CordConstruction cord_construction = CordConstruction::kHullChain;  ///< see CordConstruction
+
+  // §3.4 eligibility of the seed cord
+  double xi_min_m = 0.015;                             ///< ξ_min [m]
+  double xi_max_m = 0.075;                             ///< ξ_max [m]
+  double max_squeeze_angle_rad = 0.78539816339744831;  ///< Case II angle test bound, π/4 [rad]
+
+  // §4 scanning
+  double scan_angle_rad = 0.034906585039886591;  ///< θ = 2° between neighbouring cords [rad]
+  int max_cords_per_side = 200;    ///< safety cap on n (not in the spec; n ≈ 5–30 in practice)
+  bool shrink_on_failure = false;  ///< §11.6 alternative: shrink n symmetrically instead of
+                                   ///< discarding a set whose ±i cord fails (keeps n ≥ 1)
+
+  // §5 Algorithm 1
+  SphereSequence sphere_sequence = SphereSequence::kYershovaLaValle;
+  int sphere_points = 10000;            ///< N points on each sphere [1]
+  int max_iterations = 1000;            ///< M outer iterations (reshuffles) [1]
+  int sets = 20;                        ///< K valid sets to collect before local improvement [1]
+  double min_triangle_area_m2 = 1e-12;  ///< acute test: area must exceed this [m²]
+
+  // §5 local improvement (resolution)
+  bool local_improvement = true;   ///< run the local-improvement pass
+  int perturbations_per_set = 10;  ///< L rigid perturbations of each set's T0 [1]
+  double perturb_max_angle_rad = 0.087266462599716474;  ///< rotation ∈ [0, 5°] [rad]
+  double perturb_max_translation_m = 0.01;              ///< translation uniform in this ball [m]
+
+  // §6 XOR measure
+  XorBackend xor_backend = XorBackend::kConvex;  ///< kConvex by default: same χ, ~20× cheaper
+  double clipper_scale = 1e7;                    ///< S: Clipper integer units per meter (0.1 µm)
+
+  // run control
+  std::uint64_t seed = 1;      ///< seeds the single std::mt19937_64 (shuffles, perturbations)
+  double time_limit_s = 30.0;  ///< wall-clock cap of explore_cords; ≤ 0 means none [s].
+                               ///< Hitting it makes the result time-dependent.
+};
+
+}  // namespace cordgrasp

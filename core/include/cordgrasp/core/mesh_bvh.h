@@ -1,0 +1,31 @@
+#pragma once
+#include <Eigen/Core>
+#include <vector>
+
+#include "cordgrasp/core/mesh.h"
+
+namespace cordgrasp {
+
+/// Bounding-volume hierarchy over a triangle soup, used to slice it with planes (spec §2.2) and
+/// to cast segments against it (spec §2.3). Holds its own copy of the geometry.
+struct MeshBvh {
+  struct Node {
+    Eigen::Vector3d lo = Eigen::Vector3d::Zero();      ///< box min [m]
+    Eigen::Vector3d hi = Eigen::Vector3d::Zero();      ///< box max [m]
+    Eigen::Vector3d center = Eigen::Vector3d::Zero();  ///< (lo + hi) / 2 [m]
+    Eigen::Vector3d half = Eigen::Vector3d::Zero();    ///< (hi − lo) / 2 [m]
+    double radius = 0.0;                               ///< ‖half‖: bounding-sphere radius [m]
+    int first = 0;  ///< leaf: first index into `triangles`; inner node: index of right child
+    int count = 0;  ///< leaf: number of triangles; 0 marks an inner node (left child = own + 1)
+  };
+  std::vector<Node> nodes;                 ///< nodes[0] is the root; empty for an empty mesh
+  std::vector<Eigen::Vector3d> vertices;   ///< Mesh::vertices, same indices [m]
+  std::vector<Eigen::Vector3i> triangles;  ///< Mesh::triangles in leaf order
+  std::vector<int> triangle_ids;           ///< index in Mesh::triangles of triangles[k]
+};
+
+/// Builds a median-split BVH (longest centroid axis) with at most `max_leaf_triangles` per leaf.
+/// Deterministic. @throws std::invalid_argument when max_leaf_triangles < 1.
+MeshBvh build_mesh_bvh(const Mesh& mesh, int max_leaf_triangles = 4);
+
+}  // namespace cordgrasp

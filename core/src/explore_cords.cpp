@@ -1,0 +1,132 @@
+#include "cordgrasp/core/explore_cords.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <mutex>
+#include <numeric>
+#include <random>
+#include <stdexcept>
+
+#include "cord_random.h"
+#include "cordgrasp/core/cord_object.h"
+#include "cordgrasp/core/guide_frame.h"
+#include "cordgrasp/core/scan_cord_set.h"
+#include "cordgrasp/core/sphere_points.h"
+
+namespace cordgrasp {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Unit sphere points, computed once per (count, kind) and process (they are deterministic).
+const std::vector<Eigen::Vector3d>& cached_sphere_points(int count, SphereSequence kind) {
+  static std::mutex mutex;
+  static std::map<std::pair<int, int>, std::vector<Eigen::Vector3d>> cache;
+  const std::lock_guard<std::mutex> lock(mutex);
+  std::vector<Eigen::Vector3d>& points = cache[{count, int(kind)}];
+  if (int(points.size()) != count) points = sphere_points(count, kind);
+  return points;
+}
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+}  // namespace
+
+std::vector<GraspRegion> explore_cords(const Mesh& mesh, double palm_width_m,
+                                       const CordParams& params, ExplorationStats* stats_out) {
+  const Clock::time_point start = Clock::now();
+  if (!(palm_width_m > 0.0)) throw std::invalid_argument("explore_cords: palm width must be > 0 m");
+  const CordObject object = make_cord_object(mesh);
+  ExplorationStats st;
+  const bool timed = params.time_limit_s > 0.0;
+  const Clock::time_point deadline =
+      timed ? start + std::chrono::duration_cast<Clock::duration>(
+                          std::chrono::duration<double>(params.time_limit_s))
+            : Clock::time_point::max();
+  auto out_of_time = [&]() {
+    if (timed && Clock::now() >= deadline) st.hit_time_limit = true;
+    return st.hit_time_limit;
+  };
+
+  const double r2 = object.radius_m + params.r2_margin_m;
+  const double r1 = r2 + params.delta_r_m;
+  const int count = std::max(0, params.sphere_points);
+  const std::vector<Eigen::Vector3d>& unit = cached_sphere_points(count, params.sphere_sequence);
+  std::mt19937_64 rng(params.seed);
+  std::vector<int> perm1(count), perm2(count), perm3(count);
+  std::iota(perm1.begin(), perm1.end(), 0);
+  perm2 = perm3 = perm1;
+
+  // Algorithm 1 (spec §5).
+  std::vector<GraspRegion> found;
+  const size_t wanted = size_t(std::max(0, params.sets));
+  const Clock::time_point sampling_start = Clock::now();
+  for (int it = 0; it < params.max_iterations && found.size() < wanted && count > 0; ++it) {
+    if (out_of_time()) break;
+    ++st.iterations;
+    detail::shuffle(perm1, rng);
+    detail::shuffle(perm2, rng);
+    detail::shuffle(perm3, rng);
+    for (int j = 0; j < count && found.size() < wanted; ++j) {
+      if ((j & 63) == 0 && out_of_time()) break;
+      ++st.triangles_sampled;
+      const Eigen::Vector3d p1 = object.center + r1 * unit[perm1[j]];
+      const Eigen::Vector3d p2 = object.center + r2 * unit[perm2[j]];
+      const Eigen::Vector3d p3 = object.center + r2 * unit[perm3[j]];
+      if (!is_acute_triangle(p1, p2, p3, params.min_triangle_area_m2)) continue;
+      ++st.triangles_acute;
+      ScanFailure why = ScanFailure::kNone;
+      std::optional<GraspRegion> region =
+          scan_cord_set(object, p1, p2, p3, palm_width_m, params, &why);
+      if (why != ScanFailure::kSeedCord) ++st.seed_cords;
+      if (why == ScanFailure::kNone || why == ScanFailure::kSideCord) ++st.sets_tried;
+      if (region) {
+        ++st.sets_valid;
+        found.push_back(std::move(*region));
+      }
+    }
+  }
+  st.sampling_time_s = seconds_since(sampling_start);
+
+  // Local improvement (spec §5 resolution): L rigid perturbations of each set's T0.
+  const Clock::time_point improvement_start = Clock::now();
+  if (params.local_improvement && !st.hit_time_limit) {
+    const size_t base = found.size();
+    for (size_t s = 0; s < base && !st.hit_time_limit; ++s) {
+      const Eigen::Vector3d t0[3] = {found[s].p1, found[s].p2, found[s].p3};
+      const Eigen::Vector3d g = (t0[0] + t0[1] + t0[2]) / 3.0;
+      for (int l = 0; l < params.perturbations_per_set; ++l) {
+        if (out_of_time()) break;
+        const Eigen::Vector3d axis = detail::uniform_unit_vector(rng);
+        const double angle = detail::uniform01(rng) * params.perturb_max_angle_rad;
+        const Eigen::Vector3d shift =
+            detail::uniform_in_ball(rng, params.perturb_max_translation_m);
+        const Eigen::AngleAxisd rot(angle, axis);
+        Eigen::Vector3d p[3];
+        for (int k = 0; k < 3; ++k) p[k] = g + rot * (t0[k] - g) + shift;
+        ++st.improvement_tried;
+        if (!is_acute_triangle(p[0], p[1], p[2], params.min_triangle_area_m2)) continue;
+        std::optional<GraspRegion> region =
+            scan_cord_set(object, p[0], p[1], p[2], palm_width_m, params);
+        if (region) {
+          region->from_local_improvement = true;
+          ++st.improvement_valid;
+          found.push_back(std::move(*region));
+        }
+      }
+    }
+  }
+  st.improvement_time_s = seconds_since(improvement_start);
+
+  std::stable_sort(found.begin(), found.end(),
+                   [](const GraspRegion& a, const GraspRegion& b) { return a.chi_m2 < b.chi_m2; });
+  st.time_s = seconds_since(start);
+  if (stats_out) *stats_out = st;
+  return found;
+}
+
+}  // namespace cordgrasp

@@ -1,0 +1,90 @@
+#include "cordgrasp/core/mesh_bvh.h"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+namespace cordgrasp {
+namespace {
+
+struct Builder {
+  const Mesh& mesh;
+  int max_leaf;
+  std::vector<Eigen::Vector3d> centroid;
+  std::vector<int> order;
+  MeshBvh& bvh;
+
+  void bounds(int begin, int end, Eigen::Vector3d& lo, Eigen::Vector3d& hi) const {
+    lo.setConstant(std::numeric_limits<double>::infinity());
+    hi = -lo;
+    for (int k = begin; k < end; ++k) {
+      const Eigen::Vector3i& t = mesh.triangles[order[k]];
+      for (int c = 0; c < 3; ++c) {
+        lo = lo.cwiseMin(mesh.vertices[t[c]]);
+        hi = hi.cwiseMax(mesh.vertices[t[c]]);
+      }
+    }
+  }
+
+  int build(int begin, int end) {
+    const int index = int(bvh.nodes.size());
+    bvh.nodes.emplace_back();
+    Eigen::Vector3d lo, hi;
+    bounds(begin, end, lo, hi);
+    bvh.nodes[index].lo = lo;
+    bvh.nodes[index].hi = hi;
+    bvh.nodes[index].center = 0.5 * (lo + hi);
+    bvh.nodes[index].half = 0.5 * (hi - lo);
+    bvh.nodes[index].radius = bvh.nodes[index].half.norm();
+    if (end - begin <= max_leaf) {
+      bvh.nodes[index].first = begin;
+      bvh.nodes[index].count = end - begin;
+      return index;
+    }
+    Eigen::Vector3d clo = centroid[order[begin]], chi = clo;
+    for (int k = begin + 1; k < end; ++k) {
+      clo = clo.cwiseMin(centroid[order[k]]);
+      chi = chi.cwiseMax(centroid[order[k]]);
+    }
+    int axis = 0;
+    (chi - clo).maxCoeff(&axis);
+    const int mid = begin + (end - begin) / 2;
+    std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
+                     [&](int a, int b) {
+                       const double ca = centroid[a][axis], cb = centroid[b][axis];
+                       return ca < cb || (ca == cb && a < b);
+                     });
+    build(begin, mid);
+    const int right = build(mid, end);
+    bvh.nodes[index].first = right;
+    bvh.nodes[index].count = 0;
+    return index;
+  }
+};
+
+}  // namespace
+
+MeshBvh build_mesh_bvh(const Mesh& mesh, int max_leaf_triangles) {
+  if (max_leaf_triangles < 1) throw std::invalid_argument("build_mesh_bvh: max_leaf_triangles < 1");
+  MeshBvh bvh;
+  bvh.vertices = mesh.vertices;
+  const int n = int(mesh.triangles.size());
+  if (n == 0) return bvh;
+  Builder b{mesh, max_leaf_triangles, {}, {}, bvh};
+  b.centroid.resize(n);
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Vector3i& t = mesh.triangles[k];
+    b.centroid[k] = (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0;
+  }
+  b.order.resize(n);
+  std::iota(b.order.begin(), b.order.end(), 0);
+  bvh.nodes.reserve(2 * (n / max_leaf_triangles + 1));
+  b.build(0, n);
+  bvh.triangle_ids = b.order;
+  bvh.triangles.resize(n);
+  for (int k = 0; k < n; ++k) bvh.triangles[k] = mesh.triangles[b.order[k]];
+  return bvh;
+}
+
+}  // namespace cordgrasp

@@ -1,0 +1,125 @@
+// Primitive A (plane cross-section) and Primitive B (segment–mesh hits): the BVH forms agree
+// with brute force.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <random>
+#include <tuple>
+
+#include "cord_test_util.h"
+#include "cordgrasp/core/mesh_bvh.h"
+#include "cordgrasp/core/mesh_io.h"
+#include "cordgrasp/core/plane_cross_section.h"
+#include "cordgrasp/core/segment_mesh_hits.h"
+#include "test_paths.h"
+
+namespace cordgrasp {
+namespace {
+
+using Key = std::tuple<double, double, double, double>;
+
+std::vector<Key> sorted_keys(const std::vector<Segment2>& segments) {
+  std::vector<Key> keys;
+  for (const Segment2& s : segments) keys.emplace_back(s.a.x(), s.a.y(), s.b.x(), s.b.y());
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+PlaneFrame random_plane_through(const Mesh& mesh, std::mt19937_64& rng) {
+  const CordObject object = make_cord_object(mesh);
+  const test::GuideTriangle t = test::random_guide_triangle(object, rng);
+  return guide_frame(t.p1, t.p2, t.p3);
+}
+
+void expect_bvh_matches_brute_force(const Mesh& mesh, int planes, std::mt19937_64& rng) {
+  const MeshBvh bvh = build_mesh_bvh(mesh);
+  for (int k = 0; k < planes; ++k) {
+    const PlaneFrame plane = random_plane_through(mesh, rng);
+    const CrossSection brute = plane_cross_section(mesh, plane);
+    const CrossSection fast = plane_cross_section(bvh, plane);
+    // Same arithmetic on the same triangles: bit-identical segments.
+    ASSERT_EQ(sorted_keys(brute.segments), sorted_keys(fast.segments)) << mesh.name;
+    EXPECT_EQ(brute.points.size(), fast.points.size()) << mesh.name;
+    std::vector<Segment2> appended;
+    append_plane_cross_section_segments(bvh, plane, appended);
+    EXPECT_EQ(sorted_keys(brute.segments), sorted_keys(appended)) << mesh.name;
+  }
+}
+
+TEST(PlaneCrossSection, BvhMatchesBruteForceOnRandomPlanes) {
+  std::mt19937_64 rng(7);
+  for (const Mesh& mesh : test::test_shapes()) expect_bvh_matches_brute_force(mesh, 40, rng);
+}
+
+TEST(PlaneCrossSection, SharedEdgesGiveOnePointPerCrossingOfAClosedSurface) {
+  // A closed manifold: every crossing point is shared by exactly two segments.
+  const Mesh sphere = make_sphere_mesh(0.04, 16, 32);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> offset(-0.03, 0.03);
+  for (int k = 0; k < 20; ++k) {
+    const Eigen::Vector3d n = test::random_unit(rng);
+    const Eigen::Vector3d e1 = n.unitOrthogonal();
+    PlaneFrame plane{offset(rng) * n, e1, n.cross(e1), n};
+    const CrossSection cs = plane_cross_section(sphere, plane);
+    ASSERT_FALSE(cs.segments.empty());
+    EXPECT_EQ(cs.points.size(), cs.segments.size());
+  }
+}
+
+TEST(PlaneCrossSection, BoxSectionIsItsSquareOutline) {
+  constexpr double kTol_m = 1e-15;
+  const Mesh box = make_box_mesh(Eigen::Vector3d(0.04, 0.04, 0.04));
+  PlaneFrame plane;
+  plane.origin = Eigen::Vector3d(0.0, 0.0, 0.003);
+  const CrossSection cs = plane_cross_section(box, plane);
+  double perimeter = 0.0;
+  for (const Segment2& s : cs.segments) {
+    perimeter += (s.b - s.a).norm();
+    for (const Eigen::Vector2d& p : {s.a, s.b})
+      EXPECT_NEAR(p.cwiseAbs().maxCoeff(), 0.02, kTol_m);  // on the square's outline
+  }
+  EXPECT_NEAR(perimeter, 0.16, 1e-12);
+}
+
+TEST(SegmentMeshHits, BvhMatchesBruteForceOnRandomSegments) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-0.08, 0.08);
+  for (const Mesh& mesh : test::test_shapes()) {
+    const MeshBvh bvh = build_mesh_bvh(mesh);
+    for (int k = 0; k < 200; ++k) {
+      const Eigen::Vector3d a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng));
+      const std::vector<SegmentHit> brute = segment_mesh_hits(mesh, a, b);
+      const std::vector<SegmentHit> fast = segment_mesh_hits(bvh, a, b);
+      ASSERT_EQ(brute.size(), fast.size()) << mesh.name;
+      for (size_t h = 0; h < brute.size(); ++h) EXPECT_EQ(brute[h].t, fast[h].t);
+      const double len = (b - a).norm();
+      const bool interior_hit = std::any_of(brute.begin(), brute.end(), [&](const SegmentHit& h) {
+        return h.t * len > 1e-9 && (1.0 - h.t) * len > 1e-9;
+      });
+      EXPECT_EQ(segment_meets_mesh(bvh, a, b), interior_hit);
+    }
+  }
+}
+
+TEST(SegmentMeshHits, ThroughABoxHitsBothFacesInOrder) {
+  constexpr double kTol = 1e-12;
+  const Mesh box = make_box_mesh(Eigen::Vector3d(0.04, 0.04, 0.04));
+  const std::vector<SegmentHit> hits = segment_mesh_hits(box, Eigen::Vector3d(-0.1, 0.003, 0.001),
+                                                         Eigen::Vector3d(0.1, 0.003, 0.001));
+  ASSERT_EQ(hits.size(), 2u);
+  EXPECT_NEAR(hits[0].point.x(), -0.02, kTol);
+  EXPECT_NEAR(hits[1].point.x(), 0.02, kTol);
+}
+
+TEST(CrossSectionDataset, BvhMatchesBruteForceOnSharedObjects) {
+  CORDGRASP_REQUIRE_SHARED_DATA();
+  std::mt19937_64 rng(5);
+  for (const std::string dir : {"kit", "ycb", "simox"})
+    for (const std::string& path :
+         test::files_in(test::shared_data_dir() + "/objects/" + dir, ".obj"))
+      expect_bvh_matches_brute_force(load_mesh(path), 5, rng);
+}
+
+}  // namespace
+}  // namespace cordgrasp

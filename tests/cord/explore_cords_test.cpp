@@ -1,0 +1,229 @@
+// Exploration stage (spec §5): determinism, complete ranked regions, local improvement, caps,
+// and robustness on every shared object.
+#include "cordgrasp/core/explore_cords.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cord_test_util.h"
+#include "cordgrasp/core/mesh_io.h"
+#include "cordgrasp/core/scan_cord_set.h"
+#include "test_paths.h"
+
+namespace cordgrasp {
+namespace {
+
+constexpr double kPalmWidth_m = 0.085;  ///< SAH-like palm (spec §4)
+constexpr double kTol_m = 1e-12;
+
+Mesh bottle() { return make_cylinder_mesh(0.03, 0.16, 32); }
+
+/// No cap-dependent result: the time limit is off.
+CordParams untimed(std::uint64_t seed = 1) {
+  CordParams params;
+  params.seed = seed;
+  params.time_limit_s = 0.0;
+  return params;
+}
+
+bool all_finite(const GraspRegion& r) {
+  bool ok = std::isfinite(r.chi_m2) && std::isfinite(r.xi_m);
+  for (const Eigen::Vector3d& p : {r.p1, r.p2, r.p3, r.normal, r.p_l, r.p_r, r.p_m})
+    ok = ok && p.allFinite();
+  for (const Polyline3& c : r.front_cords)
+    for (const Eigen::Vector3d& p : c) ok = ok && p.allFinite();
+  return ok;
+}
+
+void expect_identical(const GraspRegion& a, const GraspRegion& b) {
+  EXPECT_EQ(a.p1, b.p1);
+  EXPECT_EQ(a.p2, b.p2);
+  EXPECT_EQ(a.p3, b.p3);
+  EXPECT_EQ(a.normal, b.normal);
+  EXPECT_EQ(a.p_l, b.p_l);
+  EXPECT_EQ(a.p_r, b.p_r);
+  EXPECT_EQ(a.p_m, b.p_m);
+  EXPECT_EQ(a.cord_case, b.cord_case);
+  EXPECT_EQ(a.n, b.n);
+  EXPECT_EQ(a.xi_m, b.xi_m);
+  EXPECT_EQ(a.chi_m2, b.chi_m2);
+  EXPECT_EQ(a.from_local_improvement, b.from_local_improvement);
+  ASSERT_EQ(a.front_cords.size(), b.front_cords.size());
+  for (size_t k = 0; k < a.front_cords.size(); ++k) EXPECT_EQ(a.front_cords[k], b.front_cords[k]);
+}
+
+TEST(ExploreCords, SameSeedGivesIdenticalRegions) {
+  const Mesh mesh = bottle();
+  ExplorationStats sa, sb;
+  const auto a = explore_cords(mesh, kPalmWidth_m, untimed(5), &sa);
+  const auto b = explore_cords(mesh, kPalmWidth_m, untimed(5), &sb);
+  ASSERT_FALSE(a.empty());
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t k = 0; k < a.size(); ++k) expect_identical(a[k], b[k]);
+  EXPECT_EQ(sa.triangles_sampled, sb.triangles_sampled);
+  EXPECT_EQ(sa.improvement_valid, sb.improvement_valid);
+}
+
+TEST(ExploreCords, DifferentSeedsSampleDifferently) {
+  const Mesh mesh = bottle();
+  const auto a = explore_cords(mesh, kPalmWidth_m, untimed(1));
+  const auto b = explore_cords(mesh, kPalmWidth_m, untimed(2));
+  ASSERT_FALSE(a.empty());
+  ASSERT_FALSE(b.empty());
+  // The seed triangles found first differ (P1 is drawn from a reshuffled sphere sequence).
+  int shared = 0;
+  for (const GraspRegion& ra : a)
+    for (const GraspRegion& rb : b) shared += (ra.p1 == rb.p1 && ra.p2 == rb.p2) ? 1 : 0;
+  EXPECT_LT(shared, int(a.size()) / 2);
+}
+
+TEST(ExploreCords, RegionsAreCompleteEligibleAndRankedByChi) {
+  const Mesh mesh = bottle();
+  const CordParams params = untimed();
+  ExplorationStats stats;
+  const auto regions = explore_cords(mesh, kPalmWidth_m, params, &stats);
+  ASSERT_FALSE(regions.empty());
+  EXPECT_EQ(stats.sets_valid, params.sets);
+  EXPECT_EQ(int(regions.size()), stats.sets_valid + stats.improvement_valid);
+  EXPECT_LE(stats.improvement_tried, params.sets * params.perturbations_per_set);
+  EXPECT_LE(stats.sets_valid, stats.sets_tried);
+  EXPECT_LE(stats.sets_tried, stats.seed_cords);
+  EXPECT_LE(stats.seed_cords, stats.triangles_acute);
+  EXPECT_LE(stats.triangles_acute, stats.triangles_sampled);
+  EXPECT_FALSE(stats.hit_time_limit);
+  for (size_t k = 0; k < regions.size(); ++k) {
+    const GraspRegion& r = regions[k];
+    ASSERT_TRUE(all_finite(r));
+    if (k > 0) {
+      EXPECT_LE(regions[k - 1].chi_m2, r.chi_m2);
+    }
+    EXPECT_GE(r.chi_m2, 0.0);
+    EXPECT_GE(r.n, 1);
+    ASSERT_EQ(int(r.front_cords.size()), 2 * r.n + 1);
+    const Polyline3& seed = r.front_cords[r.n];
+    EXPECT_LT((seed.front() - r.p_r).norm(), kTol_m);
+    EXPECT_LT((seed.back() - r.p_l).norm(), kTol_m);
+    EXPECT_LT((r.p_m - 0.5 * (r.p_l + r.p_r)).norm(), kTol_m);
+    EXPECT_GE(r.xi_m, params.xi_min_m);
+    EXPECT_LE(r.xi_m, params.xi_max_m);
+    EXPECT_NEAR(r.normal.norm(), 1.0, 1e-12);
+    EXPECT_NEAR(r.normal.dot(r.p2 - r.p1), 0.0, 1e-12);
+    EXPECT_NEAR(r.normal.dot(r.p_l - r.p1), 0.0, 1e-12);  // P_l lies in the seed plane
+  }
+}
+
+TEST(ExploreCords, LocalImprovementAddsPerturbedSets) {
+  const Mesh mesh = bottle();
+  CordParams with = untimed(), without = untimed();
+  without.local_improvement = false;
+  const auto a = explore_cords(mesh, kPalmWidth_m, with);
+  const auto b = explore_cords(mesh, kPalmWidth_m, without);
+  EXPECT_EQ(int(b.size()), without.sets);
+  for (const GraspRegion& r : b) EXPECT_FALSE(r.from_local_improvement);
+  int improved = 0;
+  for (const GraspRegion& r : a) improved += r.from_local_improvement ? 1 : 0;
+  EXPECT_GT(improved, 0);
+  EXPECT_EQ(int(a.size()), without.sets + improved);
+}
+
+TEST(ExploreCords, StopsAtTheTimeLimitAndSaysSo) {
+  CordParams params;
+  params.time_limit_s = 1e-9;
+  ExplorationStats stats;
+  const auto regions = explore_cords(bottle(), kPalmWidth_m, params, &stats);
+  EXPECT_TRUE(stats.hit_time_limit);
+  EXPECT_TRUE(regions.empty());
+}
+
+TEST(ExploreCords, RejectsBadArguments) {
+  EXPECT_THROW(explore_cords(bottle(), 0.0), std::invalid_argument);
+  EXPECT_THROW(explore_cords(Mesh{}, kPalmWidth_m), std::invalid_argument);
+}
+
+TEST(ExploreCords, ShrinkingKeepsSetsWhoseOuterCordsMissAnObjectNarrowerThanThePalm) {
+  // A 4 cm cube is narrower than an 8.5 cm palm: the outer scanned planes miss it, so with the
+  // default (discard) no set survives; the §11.6 shrinking variant keeps the inner cords.
+  const Mesh cube = make_box_mesh(Eigen::Vector3d(0.04, 0.04, 0.04));
+  CordParams discard = untimed(), shrink = untimed();
+  discard.max_iterations = 1;
+  shrink.max_iterations = 1;
+  shrink.shrink_on_failure = true;
+  EXPECT_TRUE(explore_cords(cube, kPalmWidth_m, discard).empty());
+  const auto regions = explore_cords(cube, kPalmWidth_m, shrink);
+  ASSERT_FALSE(regions.empty());
+  int shrunk = 0;
+  for (const GraspRegion& r : regions) {
+    EXPECT_EQ(int(r.front_cords.size()), 2 * r.n + 1);
+    const int full_n = cords_per_side(r.p1, r.p2, r.p3, r.p_m, kPalmWidth_m, shrink);
+    EXPECT_LE(r.n, full_n);
+    shrunk += r.n < full_n ? 1 : 0;
+  }
+  EXPECT_EQ(shrunk, int(regions.size()));
+}
+
+/// Default parameters capped at one iteration explore without NaN; the shrinking variant
+/// (spec §11.6 flag) yields at least one region.
+void expect_explores_to_finite_regions(const std::string& path) {
+  SCOPED_TRACE(path);
+  const Mesh mesh = load_mesh(path);
+  CordParams capped = untimed();
+  capped.max_iterations = 1;
+  capped.sets = 5;
+  for (const GraspRegion& r : explore_cords(mesh, kPalmWidth_m, capped)) EXPECT_TRUE(all_finite(r));
+  // Objects narrower than about 0.8 W_palm along the scan (the 6 cm sphere, Dex-Net-scaled KIT
+  // meshes) have no set whose outer cords all hit them under the default discard rule;
+  // shrinking keeps the cords that fit.
+  CordParams shrink = untimed();
+  shrink.shrink_on_failure = true;
+  const auto regions = explore_cords(mesh, kPalmWidth_m, shrink);
+  EXPECT_FALSE(regions.empty());
+  for (const GraspRegion& r : regions) EXPECT_TRUE(all_finite(r));
+}
+
+TEST(ExploreCords, EveryShippedObjectExploresToAFiniteRegion) {
+  const auto paths = test::files_in(test::source_dir() + "/assets/objects", ".obj");
+  EXPECT_GE(paths.size(), 10u);
+  for (const std::string& path : paths) expect_explores_to_finite_regions(path);
+}
+
+TEST(ExploreCords, ShippedObjectsWiderThanThePalmYieldRegionsWithDefaultParameters) {
+  for (const std::string name :
+       {"bottle", "box", "kettle", "long_cylinder", "mug", "pliers", "wine_glass"}) {
+    SCOPED_TRACE(name);
+    ExplorationStats stats;
+    const auto regions =
+        explore_cords(load_mesh(test::source_dir() + "/assets/objects/" + name + ".obj"),
+                      kPalmWidth_m, untimed(), &stats);
+    EXPECT_EQ(stats.sets_valid, 20);
+    EXPECT_FALSE(regions.empty());
+  }
+}
+
+TEST(ExploreCordsDataset, EveryObjectExploresToAFiniteRegion) {
+  CORDGRASP_REQUIRE_SHARED_DATA();
+  int objects = 0;
+  for (const std::string dir : {"kit", "ycb", "simox"})
+    for (const std::string& path :
+         test::files_in(test::shared_data_dir() + "/objects/" + dir, ".obj")) {
+      ++objects;
+      expect_explores_to_finite_regions(path);
+    }
+  EXPECT_EQ(objects, 38);
+}
+
+TEST(ExploreCordsDataset, YcbAndSimoxObjectsYieldRegionsWithDefaultParameters) {
+  CORDGRASP_REQUIRE_SHARED_DATA();
+  for (const std::string dir : {"ycb", "simox"})
+    for (const std::string& path :
+         test::files_in(test::shared_data_dir() + "/objects/" + dir, ".obj")) {
+      SCOPED_TRACE(path);
+      ExplorationStats stats;
+      const auto regions = explore_cords(load_mesh(path), kPalmWidth_m, untimed(), &stats);
+      EXPECT_EQ(stats.sets_valid, 20);
+      EXPECT_FALSE(regions.empty());
+    }
+}
+
+}  // namespace
+}  // namespace cordgrasp
