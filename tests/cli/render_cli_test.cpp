@@ -94,6 +94,57 @@ TEST(CliRender, HandOptionErrorsNameTheProblem) {
   EXPECT_FALSE(fs::exists(dir.path / "x.png"));
 }
 
+// Two hand-written regions on the shipped box, in the layout of `cordgrasp explore --json`.
+std::string write_regions_json(const fs::path& dir) {
+  const std::string box = test::source_dir() + "/assets/objects/box.obj";
+  std::string regions;
+  for (int k = 0; k < 2; ++k) {
+    const std::string z = std::to_string(0.02 + 0.02 * k);
+    regions += std::string(k ? "," : "") + R"({"rank": )" + std::to_string(k + 1) +
+               R"(, "chi_m2": 1e-5, "case": "I", "n": 1, "xi_m": 0.03,
+      "from_local_improvement": false, "p1": [0.2, 0, )" +
+               z + R"(], "p2": [0, 0.1, )" + z + R"(], "p3": [0, -0.1, )" + z +
+               R"(], "normal": [0, 0, 1],
+      "p_l": [0, 0.025, )" +
+               z + R"(], "p_r": [0, -0.025, )" + z + R"(], "p_m": [0, 0, )" + z +
+               R"(], "front_cords": [[[0.025, -0.025, )" + z + R"(], [0.025, 0.025, )" + z +
+               R"(]], [[0.026, -0.025, )" + z + R"(], [0.026, 0.025, )" + z +
+               R"(]], [[0.027, -0.025, )" + z + R"(], [0.027, 0.025, )" + z + "]]]}";
+  }
+  const std::string path = (dir / "regions.json").string();
+  std::ofstream(path) << R"({"object": ")" << box << R"(", "regions": [)" << regions << "]}";
+  return path;
+}
+
+TEST(CliRender, RegionsFromExploreJsonAsPictureOrSheet) {
+  TempDir dir;
+  const std::string regions = quoted(write_regions_json(dir.path));
+  const std::string one = (dir.path / "one.png").string(),
+                    sheet = (dir.path / "sheet.png").string();
+  auto r = test::run_cordgrasp("render --regions " + regions + " --region 2 --size 160x120 --out " +
+                               quoted(one));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(png_size(one), std::make_pair(160u, 120u));
+  r = test::run_cordgrasp("render --regions " + regions +
+                          " --sheet 5 --size 100x80 --no-caption --out " + quoted(sheet));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(png_size(sheet), std::make_pair(12u + 2u * 112u, 12u + 92u));  // 2 tiles, 1 row
+  r = test::run_cordgrasp("render --regions " + regions + " --region 3 --out " + quoted(one));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("has regions 1..2"), std::string::npos) << r.output;
+}
+
+TEST(CliRender, BadRegionsFileIsNamed) {
+  TempDir dir;
+  const std::string bad = (dir.path / "bad.json").string();
+  std::ofstream(bad) << "{\"regions\": [{\"p1\": [0, 0, 0]}]}";
+  const auto r = test::run_cordgrasp("render --regions " + quoted(bad) + " --out " +
+                                     quoted((dir.path / "x.png").string()));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find(bad), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("missing field"), std::string::npos) << r.output;
+}
+
 TEST(CliRender, BadSizeIsOneLineErrorNamingIt) {
   TempDir dir;
   const auto r = test::run_cordgrasp("render --object " + quoted(kMug) + " --size 320by200 --out " +

@@ -62,8 +62,10 @@ TEST(RegionJson, MissingOrInconsistentFieldsAreNamed) {
     EXPECT_NE(std::string(e.what()).find("2n + 1 = 5"), std::string::npos) << e.what();
   }
   j = region_to_json(sample_region());
-  j["case"] = 3;
+  j["case"] = "III";
   EXPECT_THROW(region_from_json(j), InputError);
+  j["case"] = 1;  // numeric form accepted
+  EXPECT_EQ(region_from_json(j).cord_case, CordCase::kI);
   j = region_to_json(sample_region());
   j["p1"] = "here";
   EXPECT_THROW(region_from_json(j), InputError);

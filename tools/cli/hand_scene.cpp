@@ -135,7 +135,7 @@ void add_region_overlay(Scene& scene, const GraspRegion& region, const Eigen::Is
   }
   if (style.region_points) {
     const double r = style.point_radius_rel * object_radius_m;
-    scene.points.push_back({X_WO * region.p1, r, Rgba(0.15, 0.15, 0.15, 1.0)});
+    if (style.p1) scene.points.push_back({X_WO * region.p1, r, Rgba(0.15, 0.15, 0.15, 1.0)});
     scene.points.push_back({X_WO * region.p_l, r, Rgba(0.80, 0.20, 0.70, 1.0)});
     scene.points.push_back({X_WO * region.p_r, r, Rgba(0.10, 0.62, 0.62, 1.0)});
   }

@@ -61,7 +61,8 @@ void add_object(Scene& scene, std::shared_ptr<const Mesh> object,
 /// How planner overlays are drawn; sizes relative to the object's bounding radius r.
 struct OverlayStyle {
   bool cords = true;                  ///< the region's front cords as thick polylines
-  bool region_points = true;          ///< P1, P_l, P_r as small spheres
+  bool region_points = true;          ///< P_l, P_r (and P1) as small spheres
+  bool p1 = true;                     ///< P1 too (off when looking along P1 → P_m)
   bool contacts = true;               ///< contact points as spheres
   bool friction_cones = false;        ///< cones (half-angle atan μ) instead of normal arrows
   double friction_coefficient = 0.5;  ///< μ for the cones

@@ -19,7 +19,7 @@ nlohmann::json region_to_json(const GraspRegion& r) {
           {"p_l", to_json(r.p_l)},
           {"p_r", to_json(r.p_r)},
           {"p_m", to_json(r.p_m)},
-          {"case", static_cast<int>(r.cord_case)},
+          {"case", r.cord_case == CordCase::kI ? "I" : "II"},
           {"n", r.n},
           {"front_cords", std::move(cords)},
           {"xi_m", r.xi_m},
@@ -49,9 +49,13 @@ GraspRegion region_from_json(const nlohmann::json& j) {
   r.p_r = vec("p_r");
   r.p_m = vec("p_m");
   try {
-    const int c = field("case").get<int>();
-    if (c != 1 && c != 2) throw InputError("region: field 'case' must be 1 or 2");
-    r.cord_case = static_cast<CordCase>(c);
+    const nlohmann::json& c = field("case");  // "I" / "II" (also 1 / 2)
+    if (c == "I" || c == 1)
+      r.cord_case = CordCase::kI;
+    else if (c == "II" || c == 2)
+      r.cord_case = CordCase::kII;
+    else
+      throw InputError("region: field 'case' must be \"I\" or \"II\"");
     r.n = field("n").get<int>();
     for (const auto& cord : field("front_cords")) {
       Polyline3 line;

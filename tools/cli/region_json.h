@@ -2,9 +2,10 @@
 // JSON form of a grasp region (cord planner exploration result), for plan.json: lets `render`
 // draw a grasp's cords and P1, P_l, P_r without re-running the exploration.
 //
-// Layout (object frame, meters): {p1, p2, p3, normal, p_l, p_r, p_m: [x, y, z], case: 1 | 2,
-//   n, front_cords: [[[x, y, z], ...], ...] (2n + 1 polylines, i = −n..n), xi_m, chi_m2,
-//   from_local_improvement}
+// Layout (object frame, meters), as the regions of `cordgrasp explore --json`:
+//   {p1, p2, p3, normal, p_l, p_r, p_m: [x, y, z], case: "I" | "II", n,
+//    front_cords: [[[x, y, z], ...], ...] (2n + 1 polylines, i = −n..n), xi_m, chi_m2,
+//    from_local_improvement}
 #include <nlohmann/json.hpp>
 
 #include "cordgrasp/core/grasp_region.h"

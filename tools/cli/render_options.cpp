@@ -9,9 +9,11 @@
 namespace cordgrasp::cli {
 
 void add_picture_options(CLI::App& cmd, PictureOptions& o) {
-  cmd.add_option("--view", o.view, "Viewpoint: iso, front, side, top or approach")
-      ->check(CLI::IsMember({"iso", "front", "side", "top", "approach"}))
-      ->capture_default_str();
+  o.view_option =
+      cmd.add_option("--view", o.view,
+                     "Viewpoint: iso, front, side, top or approach (default: iso; approach for "
+                     "--regions)")
+          ->check(CLI::IsMember({"iso", "front", "side", "top", "approach"}));
   cmd.add_option("--approach", o.approach,
                  "Viewing direction x,y,z for --view approach (default: the grasp's approach)");
   cmd.add_option("--size", o.size, "Image size WxH in pixels")->capture_default_str();

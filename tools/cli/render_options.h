@@ -20,6 +20,10 @@ struct PictureOptions {
   std::string caption;            ///< replaces the default caption
   bool no_caption = false;
   bool orthographic = false;
+  const CLI::Option* view_option = nullptr;  ///< set by add_picture_options: was --view given?
+
+  /// True when --view was given on the command line.
+  bool view_given() const { return view_option && view_option->count() > 0; }
 };
 
 /// Adds --view, --approach, --size, --supersample, --ground, --caption, --no-caption, --ortho.
