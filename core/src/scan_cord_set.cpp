@@ -55,38 +55,40 @@ std::optional<GraspRegion> scan_cord_set(const CordObject& object, const Eigen::
     q2 = p1 + rot * (p2 - p1);
     q3 = p1 + rot * (p3 - p1);
   };
-  auto accept = [&](const std::optional<FrontCord>& fc, int i, int side) {
-    if (!fc || fc->cord_case != seed->cord_case) return false;
-    (side > 0 ? upper : lower)[i - 1] = fc->cord_3d();
-    return true;
+  // Builds the ±i cord; false when the set must be discarded (or shrunk).
+  auto build = [&](int i, int side) {
+    Eigen::Vector3d q2, q3;
+    rotated(i, side, q2, q3);
+    FrontCordFailure why = FrontCordFailure::kNone;
+    const std::optional<FrontCord> fc = front_cord(object, p1, q2, q3, params, &why);
+    Polyline3& slot = (side > 0 ? upper : lower)[i - 1];
+    if (fc && fc->cord_case == seed->cord_case) {
+      slot = fc->cord_3d();
+      return true;
+    }
+    if (!fc && why == FrontCordFailure::kNoContact &&
+        params.side_cord_policy == SideCordPolicy::kEmptyWhenMissed) {
+      slot.clear();  // empty Q_i: χ counts A(Q_0) for it (spec §6 degenerate rule)
+      return true;
+    }
+    return false;
   };
-  if (params.shrink_on_failure) {
+  if (params.side_cord_policy == SideCordPolicy::kShrink) {
     // §11.6 variant: increasing i; the first failing ±i shrinks n to i − 1 (n ≥ 1 required).
     for (int i = 1; i <= n; ++i) {
-      bool ok = true;
-      for (int side : {+1, -1}) {
-        Eigen::Vector3d q2, q3;
-        rotated(i, side, q2, q3);
-        if (!(ok = accept(front_cord(object, p1, q2, q3, params), i, side))) break;
-      }
-      if (!ok) {
-        if (i == 1) return fail(ScanFailure::kSideCord, failure);
-        n = i - 1;
-        upper.resize(n);
-        lower.resize(n);
-        break;
-      }
+      if (build(i, +1) && build(i, -1)) continue;
+      if (i == 1) return fail(ScanFailure::kSideCord, failure);
+      n = i - 1;
+      upper.resize(n);
+      lower.resize(n);
+      break;
     }
   } else {
     // A set is valid only if every ±i cord is; the outermost cords fail most often, so they
     // are built first (same result, less work).
     for (int i = n; i >= 1; --i)
-      for (int side : {+1, -1}) {
-        Eigen::Vector3d q2, q3;
-        rotated(i, side, q2, q3);
-        if (!accept(front_cord(object, p1, q2, q3, params), i, side))
-          return fail(ScanFailure::kSideCord, failure);
-      }
+      for (int side : {+1, -1})
+        if (!build(i, side)) return fail(ScanFailure::kSideCord, failure);
   }
   region.n = n;
   region.front_cords.reserve(2 * n + 1);

@@ -9,6 +9,7 @@
 #include "cord_test_util.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/scan_cord_set.h"
+#include "cordgrasp/core/xor_area.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
@@ -141,42 +142,50 @@ TEST(ExploreCords, RejectsBadArguments) {
   EXPECT_THROW(explore_cords(Mesh{}, kPalmWidth_m), std::invalid_argument);
 }
 
-TEST(ExploreCords, ShrinkingKeepsSetsWhoseOuterCordsMissAnObjectNarrowerThanThePalm) {
-  // A 4 cm cube is narrower than an 8.5 cm palm: the outer scanned planes miss it, so with the
-  // default (discard) no set survives; the §11.6 shrinking variant keeps the inner cords.
+TEST(ExploreCords, ObjectNarrowerThanThePalmYieldsSetsWithEmptyOuterCordsByDefault) {
+  // A 4 cm cube is narrower than an 8.5 cm palm: the outer scanned planes miss it. The spec's
+  // literal rule (discard) keeps no set; the default scores missed cords as empty polygons and
+  // keeps n; the §11.6 shrinking variant keeps only the inner cords.
   const Mesh cube = make_box_mesh(Eigen::Vector3d(0.04, 0.04, 0.04));
-  CordParams discard = untimed(), shrink = untimed();
-  discard.max_iterations = 1;
-  shrink.max_iterations = 1;
-  shrink.shrink_on_failure = true;
+  CordParams discard = untimed(), shrink = untimed(), empty = untimed();
+  for (CordParams* p : {&discard, &shrink, &empty}) p->max_iterations = 1;
+  discard.side_cord_policy = SideCordPolicy::kDiscardSet;
+  shrink.side_cord_policy = SideCordPolicy::kShrink;
+  ASSERT_EQ(empty.side_cord_policy, SideCordPolicy::kEmptyWhenMissed);
   EXPECT_TRUE(explore_cords(cube, kPalmWidth_m, discard).empty());
-  const auto regions = explore_cords(cube, kPalmWidth_m, shrink);
-  ASSERT_FALSE(regions.empty());
-  int shrunk = 0;
-  for (const GraspRegion& r : regions) {
+
+  const auto shrunk_regions = explore_cords(cube, kPalmWidth_m, shrink);
+  ASSERT_FALSE(shrunk_regions.empty());
+  for (const GraspRegion& r : shrunk_regions) {
     EXPECT_EQ(int(r.front_cords.size()), 2 * r.n + 1);
-    const int full_n = cords_per_side(r.p1, r.p2, r.p3, r.p_m, kPalmWidth_m, shrink);
-    EXPECT_LE(r.n, full_n);
-    shrunk += r.n < full_n ? 1 : 0;
+    EXPECT_LT(r.n, cords_per_side(r.p1, r.p2, r.p3, r.p_m, kPalmWidth_m, shrink));
   }
-  EXPECT_EQ(shrunk, int(regions.size()));
+
+  const auto regions = explore_cords(cube, kPalmWidth_m, empty);
+  ASSERT_FALSE(regions.empty());
+  for (const GraspRegion& r : regions) {
+    EXPECT_EQ(r.n, cords_per_side(r.p1, r.p2, r.p3, r.p_m, kPalmWidth_m, empty));
+    ASSERT_EQ(int(r.front_cords.size()), 2 * r.n + 1);
+    EXPECT_FALSE(r.front_cords[r.n].empty());  // the seed cord always exists
+    int missed = 0;
+    for (const Polyline3& cord : r.front_cords) missed += cord.empty() ? 1 : 0;
+    EXPECT_GT(missed, 0);  // 4 cm < W_palm: some scanned plane passes beside the cube
+    // χ counts A(Q_0) for each missed cord, so it is at least that share of A(Q_0).
+    std::vector<Eigen::Vector2d> q0;
+    const Eigen::Vector3d e1 = (r.p2 - r.p1).normalized(), e2 = r.normal.cross(e1);
+    for (const Eigen::Vector3d& x : r.front_cords[r.n])
+      q0.emplace_back(e1.dot(x - r.p1), e2.dot(x - r.p1));
+    EXPECT_GE(r.chi_m2, (polygon_area(q0) * missed / (2.0 * r.n)) * (1 - 1e-9));
+  }
 }
 
-/// Default parameters capped at one iteration explore without NaN; the shrinking variant
-/// (spec §11.6 flag) yields at least one region.
+/// Default parameters capped at a few sets explore without NaN and yield at least one region.
 void expect_explores_to_finite_regions(const std::string& path) {
   SCOPED_TRACE(path);
   const Mesh mesh = load_mesh(path);
   CordParams capped = untimed();
-  capped.max_iterations = 1;
   capped.sets = 5;
-  for (const GraspRegion& r : explore_cords(mesh, kPalmWidth_m, capped)) EXPECT_TRUE(all_finite(r));
-  // Objects narrower than about 0.8 W_palm along the scan (the 6 cm sphere, Dex-Net-scaled KIT
-  // meshes) have no set whose outer cords all hit them under the default discard rule;
-  // shrinking keeps the cords that fit.
-  CordParams shrink = untimed();
-  shrink.shrink_on_failure = true;
-  const auto regions = explore_cords(mesh, kPalmWidth_m, shrink);
+  const auto regions = explore_cords(mesh, kPalmWidth_m, capped);
   EXPECT_FALSE(regions.empty());
   for (const GraspRegion& r : regions) EXPECT_TRUE(all_finite(r));
 }

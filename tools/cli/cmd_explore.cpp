@@ -24,7 +24,7 @@ struct ExploreOptions {
   int sets = 20;
   std::uint64_t seed = 1;
   bool no_local_improvement = false;
-  bool shrink_on_failure = false;
+  std::string side_cords = "empty";
   std::string xor_backend = "convex";
   double time_limit_s = 30.0;
   int top = 20;
@@ -79,7 +79,9 @@ void run_explore(const ExploreOptions& opt) {
   params.seed = opt.seed;
   params.local_improvement = !opt.no_local_improvement;
   params.time_limit_s = opt.time_limit_s;
-  params.shrink_on_failure = opt.shrink_on_failure;
+  params.side_cord_policy = opt.side_cords == "discard" ? SideCordPolicy::kDiscardSet
+                            : opt.side_cords == "shrink" ? SideCordPolicy::kShrink
+                                                         : SideCordPolicy::kEmptyWhenMissed;
   params.xor_backend = opt.xor_backend == "convex" ? XorBackend::kConvex : XorBackend::kClipper;
   ExplorationStats stats;
   const std::vector<GraspRegion> regions = explore_cords(mesh, palm_width_m, params, &stats);
@@ -96,9 +98,9 @@ void run_explore(const ExploreOptions& opt) {
             << stats.improvement_valid << '/' << stats.improvement_tried << " valid\n";
   if (regions.empty()) {
     std::cout << "no grasp region found";
-    if (stats.sets_tried > 0 && !params.shrink_on_failure)
+    if (stats.sets_tried > 0 && params.side_cord_policy == SideCordPolicy::kDiscardSet)
       std::cout << " (eligible seeds existed but their outer scanned cords failed: the object "
-                   "may be narrower than the palm; try --shrink-on-failure)";
+                   "may be narrower than the palm; try --side-cords empty)";
     std::cout << '\n';
   } else {
     std::cout << "rank  chi[mm^2]  case   n  xi[mm]  P1 [m]                       "
@@ -129,7 +131,7 @@ void run_explore(const ExploreOptions& opt) {
     j["sets"] = opt.sets;
     j["local_improvement"] = params.local_improvement;
     j["time_limit_s"] = opt.time_limit_s;
-    j["shrink_on_failure"] = opt.shrink_on_failure;
+    j["side_cords"] = opt.side_cords;
     j["xor_backend"] = opt.xor_backend;
     j["stats"] = {{"triangles_sampled", stats.triangles_sampled},
                   {"triangles_acute", stats.triangles_acute},
@@ -176,9 +178,12 @@ void add_explore_command(CLI::App& app) {
   cmd->add_option("--seed", opt->seed, "Seed of the random generator")->capture_default_str();
   cmd->add_flag("--no-local-improvement", opt->no_local_improvement,
                 "Skip the local-improvement pass");
-  cmd->add_flag("--shrink-on-failure", opt->shrink_on_failure,
-                "Keep a set whose outer cords fail, with n shrunk to the cords that succeed "
-                "(spec 11.6 variant; default: discard the set)");
+  cmd->add_option("--side-cords", opt->side_cords,
+                  "When a scanned cord fails: empty (a cord that misses the object counts as an "
+                  "empty polygon in chi; other failures discard the set), discard (spec 4.5: "
+                  "discard the set), shrink (spec 11.6: shrink n to the cords that succeed)")
+      ->check(CLI::IsMember({"empty", "discard", "shrink"}))
+      ->capture_default_str();
   cmd->add_option("--xor", opt->xor_backend,
                   "chi backend: clipper (Clipper 6.4.2 integer XOR, spec 6) or convex (exact "
                   "convex clipping, same value, faster)")

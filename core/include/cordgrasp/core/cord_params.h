@@ -24,6 +24,18 @@ enum class XorBackend {
   kConvex,   ///< exact convex clipping: A(P)+A(Q)−2A(P∩Q), valid as every Q_i is convex
 };
 
+/// What scanning does when a rotated cord T^{±i} fails (spec §4.5, §11.6).
+enum class SideCordPolicy {
+  kDiscardSet,  ///< spec §4.5 literally: any failing or case-changing ±i cord discards the set
+  kShrink,      ///< §11.6 flag: shrink n symmetrically to the last i whose ±i cords succeed
+  kEmptyWhenMissed,  ///< (resolution, default) a ±i guide triangle that holds no part of the
+                     ///< object (Case I "no contact": the scan swept past an object narrower
+                     ///< than the palm) gives an empty polygon Q_i, which §6's degenerate rule
+                     ///< scores A(Q_i ⊕ Q_0) = A(Q_0); any other failure or a case change still
+                     ///< discards the set (§4.5). n stays palm-width based, so such sets keep
+                     ///< their size and rank behind sets whose cords all touch the object.
+};
+
 /// Every number of the exploration stage (spec §1–§6) with its default and unit.
 struct CordParams {
   // §1 spheres
@@ -46,8 +58,7 @@ struct CordParams {
   // §4 scanning
   double scan_angle_rad = 0.034906585039886591;  ///< θ = 2° between neighbouring cords [rad]
   int max_cords_per_side = 200;    ///< safety cap on n (not in the spec; n ≈ 5–30 in practice)
-  bool shrink_on_failure = false;  ///< §11.6 alternative: shrink n symmetrically instead of
-                                   ///< discarding a set whose ±i cord fails (keeps n ≥ 1)
+  SideCordPolicy side_cord_policy = SideCordPolicy::kEmptyWhenMissed;  ///< see SideCordPolicy
 
   // §5 Algorithm 1
   SphereSequence sphere_sequence = SphereSequence::kYershovaLaValle;

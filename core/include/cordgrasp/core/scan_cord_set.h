@@ -23,7 +23,8 @@ int cords_per_side(const Eigen::Vector3d& p1, const Eigen::Vector3d& p2, const E
 
 /// A full set for seed guide triangle T0 = (P1, P2, P3) (spec §3–§6): eligible seed front cord,
 /// the 2n rotated guide triangles Rot(P1, a, ±iθ)·T0 with a = unit(ν × (P_m − P1)), each in
-/// the seed's case, and χ. Every GraspRegion field is filled (from_local_improvement false).
+/// the seed's case, and χ. Every GraspRegion field is filled (from_local_improvement false);
+/// under SideCordPolicy::kEmptyWhenMissed a cord that missed the object is an empty polyline.
 std::optional<GraspRegion> scan_cord_set(const CordObject& object, const Eigen::Vector3d& p1,
                                          const Eigen::Vector3d& p2, const Eigen::Vector3d& p3,
                                          double palm_width_m, const CordParams& params = {},
