@@ -1,0 +1,24 @@
+#pragma once
+#include <Eigen/Core>
+#include <random>
+
+#include "cordgrasp/core/grasp_plan.h"
+#include "cordgrasp/core/hand_collider.h"
+#include "cordgrasp/core/hand_model.h"
+#include "cordgrasp/core/mesh.h"
+
+namespace cordgrasp {
+
+/// Outward unit normal of triangle `tri` at point `p_O` on it: the winding normal, flipped when
+/// a ray from p along it crosses the soup an odd number of times (it points into the object).
+/// Ray parity is right for closed meshes whatever their winding, concave ones included.
+Eigen::Vector3d outward_face_normal(const Mesh& mesh, int tri, const Eigen::Vector3d& p_O);
+
+/// Baseline like Simox GenericGraspPlanner + ApproachMovementSurfaceNormal ([P] §V): random
+/// surface point (area-weighted), GCP there with +z along the inward normal and a uniform random
+/// roll, retreat until collision-free, close, force-closure check; repeated until params.grasps
+/// force-closure grasps, the time limit or params.max_attempts. Seeded by params.seed.
+PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
+                               HandObjectCollider& collider, const PlanParams& params);
+
+}  // namespace cordgrasp

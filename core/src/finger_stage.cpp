@@ -1,0 +1,427 @@
+#include "cordgrasp/core/finger_stage.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "cordgrasp/core/kinematics.h"
+
+namespace cordgrasp {
+
+namespace {
+
+// Bisection stops when the remaining interval moves a joint by less than this [rad or m].
+constexpr double kMinBisectionStep = 1e-6;
+constexpr int kMaxBisections = 60;
+
+std::vector<std::vector<int>> child_joints(const HandModel& hand) {
+  std::vector<std::vector<int>> out(hand.links.size());
+  for (size_t j = 0; j < hand.joints.size(); ++j)
+    out[static_cast<size_t>(hand.joints[j].parent_link)].push_back(static_cast<int>(j));
+  return out;
+}
+
+void collect_subtree(const HandModel& hand, const std::vector<std::vector<int>>& children, int link,
+                     std::vector<char>& in) {
+  in[static_cast<size_t>(link)] = 1;
+  for (int j : children[static_cast<size_t>(link)])
+    collect_subtree(hand, children, hand.joints[static_cast<size_t>(j)].child_link, in);
+}
+
+int link_depth(const HandModel& hand, int link) {
+  int depth = 0;
+  while (hand.links[static_cast<size_t>(link)].parent_joint >= 0) {
+    link = hand.joints[static_cast<size_t>(hand.links[static_cast<size_t>(link)].parent_joint)]
+               .parent_link;
+    ++depth;
+  }
+  return depth;
+}
+
+bool has_collision(const Link& link) { return !link.collisions.empty(); }
+
+// Centre of a link's geometry in its own frame: mean of the element centres (collision, else
+// visual, else the link origin).
+Eigen::Vector3d geometry_center_L(const Link& link) {
+  const auto& elements = link.collisions.empty() ? link.visuals : link.collisions;
+  if (elements.empty()) return Eigen::Vector3d::Zero();
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const Geometry& g : elements) {
+    Eigen::Vector3d c_G = Eigen::Vector3d::Zero();
+    if (g.kind == Geometry::Kind::kMesh && g.mesh && !g.mesh->vertices.empty()) {
+      Eigen::Vector3d lo = g.mesh->vertices[0], hi = lo;
+      for (const auto& v : g.mesh->vertices) {
+        lo = lo.cwiseMin(v);
+        hi = hi.cwiseMax(v);
+      }
+      c_G = 0.5 * (lo + hi);
+    }
+    sum += g.X_LG * c_G;
+  }
+  return sum / static_cast<double>(elements.size());
+}
+
+// Moving joints on the tree path between two links.
+int moving_joints_between(const HandModel& hand, int a, int b) {
+  auto chain = [&](int link) {
+    std::vector<int> joints;  // joints from link up to the root
+    while (hand.links[static_cast<size_t>(link)].parent_joint >= 0) {
+      const int j = hand.links[static_cast<size_t>(link)].parent_joint;
+      joints.push_back(j);
+      link = hand.joints[static_cast<size_t>(j)].parent_link;
+    }
+    return joints;
+  };
+  std::vector<int> ca = chain(a), cb = chain(b);
+  while (!ca.empty() && !cb.empty() && ca.back() == cb.back()) {
+    ca.pop_back();
+    cb.pop_back();
+  }
+  int moving = 0;
+  for (int j : ca) moving += hand.joints[static_cast<size_t>(j)].is_moving() ? 1 : 0;
+  for (int j : cb) moving += hand.joints[static_cast<size_t>(j)].is_moving() ? 1 : 0;
+  return moving;
+}
+
+Eigen::VectorXd coupled(const HandModel& hand, const Eigen::VectorXd& q) {
+  return clamp_to_limits(hand, apply_couplings(hand, q));
+}
+
+}  // namespace
+
+const char* to_string(FingerStatus status) {
+  switch (status) {
+    case FingerStatus::kOk:
+      return "ok";
+    case FingerStatus::kNoContact:
+      return "no_contact";
+    case FingerStatus::kOneContact:
+      return "one_contact";
+    case FingerStatus::kCannotRetreat:
+      return "cannot_retreat";
+  }
+  return "unknown";
+}
+
+Eigen::Matrix3d thumb_calibration(const HandModel& hand, const Eigen::VectorXd& q_preshape) {
+  const auto X_BL = link_poses(hand, q_preshape);
+  const Eigen::Isometry3d X_BG = gcp_pose(hand, X_BL);
+  const Eigen::Isometry3d X_GB = X_BG.inverse();
+  auto tip_G = [&](int link) {
+    return Eigen::Vector3d(X_GB * (X_BL[static_cast<size_t>(link)] *
+                                   geometry_center_L(hand.links[static_cast<size_t>(link)])));
+  };
+  auto deepest = [&](const std::vector<int>& links) {
+    int best = -1, best_depth = -1;
+    for (int l : links) {
+      const int d = link_depth(hand, l);
+      if (d > best_depth) {
+        best = l;
+        best_depth = d;
+      }
+    }
+    return best;
+  };
+  if (hand.thumb_links.empty()) return Eigen::Matrix3d::Identity();
+  const int thumb_tip = deepest(hand.thumb_links);
+
+  // Links of the thumb's chains (the named thumb links and everything they carry).
+  const auto children = child_joints(hand);
+  std::vector<char> thumb(hand.links.size(), 0);
+  for (int l : hand.thumb_links) collect_subtree(hand, children, l, thumb);
+  // One tip per actor: its outermost non-thumb link (a gripper actor moving both fingers
+  // through a mimic joint yields the non-thumb finger).
+  std::vector<Eigen::Vector3d> tips;
+  for (const Actor& actor : hand.actors) {
+    std::vector<char> in(hand.links.size(), 0);
+    for (const auto& e : actor.joints)
+      collect_subtree(hand, children, hand.joints[static_cast<size_t>(e.joint)].child_link, in);
+    for (size_t j = 0; j < hand.joints.size(); ++j) {  // mimic followers move with the actor
+      const auto& m = hand.joints[j].mimic;
+      if (!m) continue;
+      for (const auto& e : actor.joints)
+        if (e.joint == m->master_joint)
+          collect_subtree(hand, children, hand.joints[j].child_link, in);
+    }
+    std::vector<int> links, any;
+    for (size_t l = 0; l < in.size(); ++l) {
+      if (!in[l] || thumb[l]) continue;
+      any.push_back(static_cast<int>(l));
+      if (has_collision(hand.links[l])) links.push_back(static_cast<int>(l));
+    }
+    if (links.empty()) links = any;
+    if (!links.empty()) tips.push_back(tip_G(deepest(links)));
+  }
+  if (tips.empty()) return Eigen::Matrix3d::Identity();
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const auto& t : tips) centroid += t;
+  centroid /= static_cast<double>(tips.size());
+  Eigen::Vector3d o = centroid - tip_G(thumb_tip);
+  o.z() = 0.0;
+  if (o.norm() < 1e-9) return Eigen::Matrix3d::Identity();
+  o.normalize();
+  Eigen::Matrix3d R;
+  R.col(0) = o;
+  R.col(1) = Eigen::Vector3d::UnitZ().cross(o);
+  R.col(2) = Eigen::Vector3d::UnitZ();
+  return R;
+}
+
+HandSetup prepare_hand(const HandModel& hand, HandObjectCollider& collider) {
+  if (hand.actors.empty())
+    throw std::invalid_argument("prepare_hand: hand '" + hand.name + "' has no actor");
+  if (collider.num_links() != static_cast<int>(hand.links.size()))
+    throw std::invalid_argument("prepare_hand: collider has " +
+                                std::to_string(collider.num_links()) + " links, hand '" +
+                                hand.name + "' has " + std::to_string(hand.links.size()));
+  HandSetup s;
+  s.num_links = static_cast<int>(hand.links.size());
+  Eigen::VectorXd q0 = hand.preshape;
+  if (q0.size() != static_cast<Eigen::Index>(hand.joints.size()))
+    q0 = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(hand.joints.size()));
+  s.q_preshape = coupled(hand, q0);
+
+  const auto children = child_joints(hand);
+  std::vector<char> in_any(hand.links.size(), 0);
+  for (const Actor& actor : hand.actors) {
+    std::vector<int> joints;
+    std::vector<char> own(hand.joints.size(), 0);
+    for (const auto& e : actor.joints) own[static_cast<size_t>(e.joint)] = 1;
+    for (size_t j = 0; j < hand.joints.size(); ++j) {
+      const auto& m = hand.joints[j].mimic;
+      if (own[j] || (m && own[static_cast<size_t>(m->master_joint)]))
+        joints.push_back(static_cast<int>(j));
+    }
+    std::vector<char> in(hand.links.size(), 0);
+    for (int j : joints)
+      collect_subtree(hand, children, hand.joints[static_cast<size_t>(j)].child_link, in);
+    std::vector<int> links;
+    for (size_t l = 0; l < in.size(); ++l) {
+      if (!in[l]) continue;
+      in_any[l] = 1;
+      if (collider.has_geometry(static_cast<int>(l))) links.push_back(static_cast<int>(l));
+    }
+    s.actor_joints.push_back(joints);
+    s.actor_links.push_back(links);
+  }
+  for (size_t l = 0; l < hand.links.size(); ++l)
+    if (!in_any[l] && collider.has_geometry(static_cast<int>(l)))
+      s.static_links.push_back(static_cast<int>(l));
+
+  const auto X_BL = link_poses(hand, s.q_preshape);
+  collider.set_link_poses(X_BL);
+  const size_t n = hand.links.size();
+  s.ignore_pair.assign(n * n, 0);
+  for (size_t a = 0; a < n; ++a) {
+    for (size_t b = a + 1; b < n; ++b) {
+      const int ia = static_cast<int>(a), ib = static_cast<int>(b);
+      bool ignore = !collider.has_geometry(ia) || !collider.has_geometry(ib) ||
+                    moving_joints_between(hand, ia, ib) <= 1 || collider.links_collide(ia, ib);
+      s.ignore_pair[a * n + b] = s.ignore_pair[b * n + a] = ignore ? 1 : 0;
+    }
+  }
+  s.R_GH = thumb_calibration(hand, s.q_preshape);
+  s.X_GB = gcp_pose(hand, X_BL).inverse();
+  return s;
+}
+
+Eigen::Isometry3d gcp_pose_for_region(const GraspRegion& region, const Eigen::Matrix3d& R_GH,
+                                      bool flip_roll) {
+  Eigen::Vector3d z = region.p_m - region.p1;
+  if (z.norm() <= 0.0) z = -region.p1;  // degenerate: aim at the object frame origin
+  z.normalize();
+  Eigen::Vector3d o = region.p_r - region.p_l;
+  o -= o.dot(z) * z;
+  if (o.norm() < 1e-12) {
+    // P_l, P_r aligned with the approach: use the guide-plane normal to fix the roll.
+    o = region.normal.cross(z);
+  }
+  o.normalize();
+  if (flip_roll) o = -o;
+  Eigen::Matrix3d W;
+  W.col(0) = o;
+  W.col(1) = z.cross(o);
+  W.col(2) = z;
+  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+  X.linear() = W * R_GH.transpose();
+  X.translation() = region.p1;
+  return X;
+}
+
+void close_fingers(const HandModel& hand, const HandSetup& setup, HandObjectCollider& collider,
+                   const Eigen::Isometry3d& X_OB, const Eigen::VectorXd& q_start,
+                   const FingerParams& params, FingerResult& result) {
+  enum class Hit { kNone, kObject, kLink };
+  const size_t n = static_cast<size_t>(setup.num_links);
+  const size_t num_actors = setup.actor_links.size();
+
+  Eigen::VectorXd q = q_start;
+  collider.set_link_poses(link_poses(hand, q, X_OB));
+
+  auto set_actor_poses = [&](size_t a, const Eigen::VectorXd& qa) {
+    const auto X = link_poses(hand, qa, X_OB);
+    for (int l : setup.actor_links[a]) collider.set_link_pose(l, X[static_cast<size_t>(l)]);
+  };
+  // Self-collision pairs each actor checks: its links against every other link with geometry
+  // (other actors, static links) except ignored neighbours.
+  std::vector<std::vector<std::pair<int, int>>> pairs(num_actors);
+  for (size_t a = 0; a < num_actors; ++a) {
+    std::vector<char> mine(n, 0);
+    for (int l : setup.actor_links[a]) mine[static_cast<size_t>(l)] = 1;
+    for (int l : setup.actor_links[a])
+      for (size_t m = 0; m < n; ++m)
+        if (!mine[m] && !setup.ignore_pair[static_cast<size_t>(l) * n + m])
+          pairs[a].emplace_back(l, static_cast<int>(m));
+  }
+  auto actor_hit = [&](size_t a) {
+    for (int l : setup.actor_links[a])
+      if (collider.link_collides_with_object(l)) return Hit::kObject;
+    for (const auto& [l, m] : pairs[a])
+      if (collider.links_collide(l, m)) return Hit::kLink;
+    return Hit::kNone;
+  };
+  auto near_object = [&](size_t a) {
+    for (int l : setup.actor_links[a])
+      if (collider.link_object_proximity(l, params.contact_tolerance_m)) return true;
+    return false;
+  };
+
+  // Step of each actor's own joints (mimic followers come from apply_couplings).
+  std::vector<Eigen::VectorXd> delta(num_actors, Eigen::VectorXd::Zero(q.size()));
+  std::vector<double> max_step(num_actors, 0.0);
+  for (size_t a = 0; a < num_actors; ++a) {
+    for (const auto& e : hand.actors[a].joints) {
+      delta[a][e.joint] = params.close_step * e.direction_speed;
+      max_step[a] = std::max(max_step[a], std::abs(delta[a][e.joint]));
+    }
+  }
+
+  std::vector<char> finished(num_actors, 0);
+  for (size_t a = 0; a < num_actors; ++a) finished[a] = max_step[a] <= 0.0;
+  int iterations = 0;
+  while (iterations < params.max_close_iterations &&
+         std::find(finished.begin(), finished.end(), 0) != finished.end()) {
+    ++iterations;
+    for (size_t a = 0; a < num_actors; ++a) {
+      if (finished[a]) continue;
+      const Eigen::VectorXd q_try = coupled(hand, q + delta[a]);
+      bool moved = false;
+      for (int j : setup.actor_joints[a]) moved = moved || q_try[j] != q[j];
+      if (!moved) {  // every joint at its limit
+        finished[a] = 1;
+        continue;
+      }
+      set_actor_poses(a, q_try);
+      Hit hit = actor_hit(a);
+      if (hit == Hit::kNone) {
+        q = q_try;
+        continue;
+      }
+      // Bisect the step between the free q (t = 0) and the colliding q_try (t = 1).
+      double lo = 0.0, hi = 1.0;
+      set_actor_poses(a, q);
+      bool done = hit == Hit::kObject && near_object(a);
+      for (int it = 0; !done && it < kMaxBisections; ++it) {
+        if ((hi - lo) * max_step[a] < kMinBisectionStep) break;
+        const double mid = 0.5 * (lo + hi);
+        const Eigen::VectorXd q_mid = coupled(hand, q + mid * delta[a]);
+        set_actor_poses(a, q_mid);
+        const Hit h = actor_hit(a);
+        if (h != Hit::kNone) {
+          hi = mid;
+          hit = h;
+        } else {
+          lo = mid;
+          done = hit == Hit::kObject && near_object(a);
+        }
+      }
+      q = coupled(hand, q + lo * delta[a]);
+      set_actor_poses(a, q);
+      finished[a] = 1;
+    }
+  }
+
+  result.q = q;
+  result.close_iterations = iterations;
+  result.contacts.clear();
+  collider.set_link_poses(link_poses(hand, q, X_OB));
+  for (size_t a = 0; a < num_actors; ++a) {
+    for (int l : setup.actor_links[a]) {
+      const auto prox = collider.link_object_proximity(l, params.contact_tolerance_m);
+      if (!prox) continue;
+      Contact c;
+      c.link = l;
+      c.p_O = prox->p_object_O;
+      c.n_O = prox->n_O;
+      result.contacts.push_back(c);
+    }
+  }
+  const int count = static_cast<int>(result.contacts.size());
+  result.status = count == 0                    ? FingerStatus::kNoContact
+                  : count < params.min_contacts ? FingerStatus::kOneContact
+                                                : FingerStatus::kOk;
+}
+
+FingerResult run_finger_stage(const HandModel& hand, const HandSetup& setup,
+                              HandObjectCollider& collider, const Eigen::Isometry3d& X_OG_start,
+                              double approach_travel_m, const FingerParams& params) {
+  FingerResult r;
+  r.q_preshape = setup.q_preshape;
+  r.q = setup.q_preshape;
+  const auto X_BL = link_poses(hand, setup.q_preshape);
+  std::vector<Eigen::Isometry3d> X_OL(X_BL.size());
+  std::vector<int> geometry_links;
+  for (int l = 0; l < setup.num_links; ++l)
+    if (collider.has_geometry(l)) geometry_links.push_back(l);
+
+  auto hand_collides = [&](const Eigen::Isometry3d& X_OG) {
+    const Eigen::Isometry3d X_OB = X_OG * setup.X_GB;
+    for (int l : geometry_links) collider.set_link_pose(l, X_OB * X_BL[static_cast<size_t>(l)]);
+    for (int l : geometry_links)
+      if (collider.link_collides_with_object(l)) return true;
+    return false;
+  };
+
+  auto hand_lower_bound = [&]() {
+    double bound = std::numeric_limits<double>::infinity();
+    for (int l : geometry_links)
+      bound = std::min(bound, collider.link_object_distance_lower_bound(l));
+    return bound;
+  };
+
+  // Approach in steps; steps within the hand's conservative distance bound cannot collide and
+  // are taken without a query (same result as checking every step).
+  Eigen::Isometry3d X_OG = X_OG_start;
+  const Eigen::Vector3d z = X_OG.linear().col(2);
+  bool colliding = hand_collides(X_OG);
+  double travel = 0.0;
+  double free_until = colliding ? 0.0 : hand_lower_bound();
+  while (!colliding && travel < approach_travel_m - 1e-12) {
+    const double step = std::min(params.approach_step_m, approach_travel_m - travel);
+    travel += step;
+    X_OG.translation() += step * z;
+    ++r.approach_steps;
+    if (travel <= free_until) continue;
+    colliding = hand_collides(X_OG);
+    if (!colliding) free_until = travel + hand_lower_bound();
+  }
+  while (colliding) {
+    if (r.retreat_steps >= params.max_retreat_steps) {
+      r.status = FingerStatus::kCannotRetreat;
+      r.X_OG = X_OG;
+      r.X_OB = X_OG * setup.X_GB;
+      return r;
+    }
+    X_OG.translation() -= params.retreat_step_m * z;
+    ++r.retreat_steps;
+    colliding = hand_collides(X_OG);
+  }
+  r.X_OG = X_OG;
+  r.X_OB = X_OG * setup.X_GB;
+  close_fingers(hand, setup, collider, r.X_OB, setup.q_preshape, params, r);
+  return r;
+}
+
+}  // namespace cordgrasp

@@ -1,0 +1,301 @@
+#include "cordgrasp/core/grasp_quality.h"
+
+#include <libqhullcpp/Qhull.h>
+#include <libqhullcpp/QhullError.h>
+
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+
+#include "cordgrasp/core/mesh_properties.h"
+
+extern "C" {
+#include <libqhull_r/qhull_ra.h>
+}
+
+namespace cordgrasp {
+
+namespace {
+
+constexpr int kDim = 6;
+// Relative singular-value threshold below which the wrench set is taken as lower-dimensional.
+constexpr double kRankTolerance = 1e-9;
+// LP weight margin at or below which the origin is taken as outside the hull (pre-check only:
+// the hull decides the rest; far below the margins of grasps with ε > min_epsilon).
+constexpr double kLpInteriorTolerance = 1e-11;
+
+// Unit tangent pair (t1, t2) ⊥ n, deterministic: t1 is the coordinate axis least aligned with n,
+// projected onto the tangent plane; t2 = n × t1.
+void tangent_basis(const Eigen::Vector3d& n, Eigen::Vector3d& t1, Eigen::Vector3d& t2) {
+  Eigen::Index axis = 0;
+  n.cwiseAbs().minCoeff(&axis);
+  const Eigen::Vector3d e = Eigen::Vector3d::Unit(axis);
+  t1 = (e - e.dot(n) * n).normalized();
+  t2 = n.cross(t1);
+}
+
+bool full_rank(const std::vector<Wrench>& w) {
+  if (w.size() < kDim + 1) return false;
+  Wrench mean = Wrench::Zero();
+  for (const Wrench& x : w) mean += x;
+  mean /= static_cast<double>(w.size());
+  Eigen::Matrix<double, kDim, Eigen::Dynamic> m(kDim, static_cast<Eigen::Index>(w.size()));
+  for (size_t i = 0; i < w.size(); ++i) m.col(static_cast<Eigen::Index>(i)) = w[i] - mean;
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(m);
+  const auto& s = svd.singularValues();
+  if (s(0) <= 0.0) return false;
+  return s(kDim - 1) > kRankTolerance * s(0);
+}
+
+// Dense two-phase simplex (Bland's rule): minimise d·x subject to A x = b, x ≥ 0, b ≥ 0.
+// Returns the optimal objective, or nullopt when infeasible. Small problems only (7 rows).
+std::optional<double> simplex_min(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
+                                  const Eigen::VectorXd& d) {
+  constexpr double kTol = 1e-12;
+  const Eigen::Index m = A.rows(), n = A.cols();
+  // Tableau columns: x (n), artificials (m), rhs.
+  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(m, n + m + 1);
+  T.leftCols(n) = A;
+  T.block(0, n, m, m).setIdentity();
+  T.col(n + m) = b;
+  std::vector<Eigen::Index> basis(static_cast<size_t>(m));
+  for (Eigen::Index i = 0; i < m; ++i) basis[static_cast<size_t>(i)] = n + i;
+
+  auto run = [&](const Eigen::VectorXd& cost, Eigen::Index allowed) {
+    for (int iteration = 0; iteration < 10000; ++iteration) {
+      Eigen::Index enter = -1;
+      for (Eigen::Index j = 0; j < allowed && enter < 0; ++j) {
+        double z = cost[j];
+        for (Eigen::Index i = 0; i < m; ++i) z -= cost[basis[static_cast<size_t>(i)]] * T(i, j);
+        if (z < -kTol) enter = j;
+      }
+      if (enter < 0) return true;  // optimal
+      Eigen::Index leave = -1;
+      double best = 0.0;
+      for (Eigen::Index i = 0; i < m; ++i) {
+        if (T(i, enter) <= kTol) continue;
+        const double ratio = T(i, n + m) / T(i, enter);
+        if (leave < 0 || ratio < best - kTol ||
+            (ratio <= best + kTol &&
+             basis[static_cast<size_t>(i)] < basis[static_cast<size_t>(leave)])) {
+          leave = i;
+          best = ratio;
+        }
+      }
+      if (leave < 0) return false;  // unbounded
+      T.row(leave) /= T(leave, enter);
+      for (Eigen::Index i = 0; i < m; ++i)
+        if (i != leave && T(i, enter) != 0.0) T.row(i) -= T(i, enter) * T.row(leave);
+      basis[static_cast<size_t>(leave)] = enter;
+    }
+    return false;
+  };
+
+  Eigen::VectorXd phase1 = Eigen::VectorXd::Zero(n + m);
+  phase1.tail(m).setOnes();
+  if (!run(phase1, n + m)) return std::nullopt;
+  double infeasibility = 0.0;
+  for (Eigen::Index i = 0; i < m; ++i)
+    if (basis[static_cast<size_t>(i)] >= n) infeasibility += T(i, n + m);
+  if (infeasibility > 1e-9) return std::nullopt;
+  Eigen::VectorXd phase2 = Eigen::VectorXd::Zero(n + m);
+  phase2.head(n) = d;
+  phase2.tail(m).setConstant(1e6);  // artificials at zero must not re-enter profitably
+  if (!run(phase2, n)) return std::nullopt;
+  double value = 0.0;
+  for (Eigen::Index i = 0; i < m; ++i) value += phase2[basis[static_cast<size_t>(i)]] * T(i, n + m);
+  return value;
+}
+
+// Largest t such that 0 = Σ λ_i w_i with Σ λ_i = 1 and every λ_i ≥ t (LP). For wrenches that
+// span R^6, the origin is strictly inside their hull iff t > 0; −1 when it is not in the hull.
+double min_weight_margin(const std::vector<Wrench>& w) {
+  const Eigen::Index n = static_cast<Eigen::Index>(w.size());
+  // Variables: μ_i = λ_i − t ≥ 0 (n of them) and t ≥ 0.
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(kDim + 1, n + 1);
+  Wrench sum = Wrench::Zero();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    A.block(0, i, kDim, 1) = w[static_cast<size_t>(i)];
+    A(kDim, i) = 1.0;
+    sum += w[static_cast<size_t>(i)];
+  }
+  A.block(0, n, kDim, 1) = sum;
+  A(kDim, n) = static_cast<double>(n);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(kDim + 1);
+  b[kDim] = 1.0;
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(n + 1);
+  d[n] = -1.0;  // maximise t
+  const auto value = simplex_min(A, b, d);
+  return value ? -*value : -1.0;
+}
+
+double mu_for(const QualityParams& params) {
+  return params.mode == QualityMode::kSimox ? params.simox_mu_eff : params.contact.mu;
+}
+
+}  // namespace
+
+const char* to_string(QualityMode mode) {
+  return mode == QualityMode::kSimox ? "simox" : "textbook";
+}
+
+QualityMode quality_mode_from_string(const std::string& text) {
+  if (text == "textbook") return QualityMode::kTextbook;
+  if (text == "simox") return QualityMode::kSimox;
+  throw std::invalid_argument("quality mode '" + text + "': expected textbook or simox");
+}
+
+std::vector<Wrench> contact_wrenches(const Eigen::Vector3d& p_O, const Eigen::Vector3d& n_O,
+                                     double mu, int edges, const Eigen::Vector3d& center_O,
+                                     double torque_scale_per_m, double soft_finger_radius_m) {
+  if (edges < 1) throw std::invalid_argument("contact_wrenches: edges must be >= 1");
+  const Eigen::Vector3d n = n_O.normalized();
+  Eigen::Vector3d t1, t2;
+  tangent_basis(n, t1, t2);
+  const Eigen::Vector3d r = p_O - center_O;
+  std::vector<Wrench> out;
+  out.reserve(static_cast<size_t>(edges));
+  for (int j = 0; j < edges; ++j) {
+    const double phi = 2.0 * M_PI * j / edges;
+    const Eigen::Vector3d f = (-n + mu * (std::cos(phi) * t1 + std::sin(phi) * t2)).normalized();
+    Wrench w;
+    w.head<3>() = f;
+    w.tail<3>() = torque_scale_per_m * r.cross(f);
+    if (soft_finger_radius_m > 0.0) {
+      const Eigen::Vector3d torsion =
+          torque_scale_per_m * mu * soft_finger_radius_m * f.dot(-n) * (-n);
+      Wrench w2 = w;
+      w.tail<3>() += torsion;
+      w2.tail<3>() -= torsion;
+      out.push_back(w2);
+    }
+    out.push_back(w);
+  }
+  return out;
+}
+
+WrenchHull wrench_hull(const std::vector<Wrench>& wrenches) {
+  WrenchHull out;
+  if (!full_rank(wrenches)) return out;
+  std::vector<coordT> coords(wrenches.size() * kDim);
+  for (size_t i = 0; i < wrenches.size(); ++i)
+    for (int d = 0; d < kDim; ++d) coords[i * kDim + d] = wrenches[i][d];
+
+  // Qhull's C++ front end: with libqhullcpp linked, errors of a bare C qhT abort the process
+  // (see convex_hull_volume.cpp); orgQhull::Qhull turns them into exceptions.
+  orgQhull::Qhull qhull;
+  std::ostringstream messages;  // keep Qhull's diagnostics off stderr
+  qhull.setErrorStream(&messages);
+  qhull.setOutputStream(&messages);
+  try {
+    qhull.runQhull("", kDim, static_cast<int>(wrenches.size()), coords.data(), "QJ Pp");
+  } catch (const orgQhull::QhullError&) {
+    return out;
+  }
+  qhT* qh = qhull.qh();
+  // Vertex centroid of the hull (Simox's "center" of the convex hull).
+  Wrench centroid = Wrench::Zero();
+  int nvertices = 0;
+  vertexT* vertex;
+  FORALLvertices {
+    for (int d = 0; d < kDim; ++d) centroid[d] += vertex->point[d];
+    ++nvertices;
+  }
+  if (nvertices > 0) centroid /= nvertices;
+  out.max_offset = -std::numeric_limits<double>::infinity();
+  out.min_origin_distance = std::numeric_limits<double>::infinity();
+  out.min_centroid_distance = std::numeric_limits<double>::infinity();
+  facetT* facet;
+  FORALLfacets {
+    const Eigen::Map<const Eigen::Matrix<coordT, kDim, 1>> a(facet->normal);
+    const double b = facet->offset;
+    out.max_offset = std::max(out.max_offset, b);
+    out.min_origin_distance = std::min(out.min_origin_distance, -b);
+    out.min_centroid_distance = std::min(out.min_centroid_distance, -(a.dot(centroid) + b));
+    ++out.facets;
+  }
+  out.valid = out.facets > 0 && nvertices > 0;
+  if (!out.valid) out = WrenchHull{};
+  return out;
+}
+
+WrenchSpaceObject prepare_wrench_space(const Mesh& mesh, const QualityParams& params) {
+  if (mesh.vertices.empty() || mesh.triangles.empty())
+    throw std::invalid_argument("prepare_wrench_space: mesh '" + mesh.name + "' is empty");
+  WrenchSpaceObject out;
+  out.center_O = vertex_mean(mesh);
+  const double longest = mesh_bounds(mesh).size().maxCoeff();
+  if (!(longest > 0.0))
+    throw std::invalid_argument("prepare_wrench_space: mesh '" + mesh.name + "' has zero size");
+  out.torque_scale_per_m = 2.0 / longest;
+  if (params.mode != QualityMode::kSimox) return out;
+
+  // Object wrench space: cones at the centroids of up to `simox_ows_faces` random faces, normals
+  // oriented away from the vertex mean (soup windings are unreliable).
+  std::vector<int> faces(mesh.triangles.size());
+  std::iota(faces.begin(), faces.end(), 0);
+  std::mt19937_64 rng(params.seed);
+  const size_t count = std::min(faces.size(), static_cast<size_t>(params.simox_ows_faces));
+  for (size_t i = 0; i < count; ++i) {
+    std::uniform_int_distribution<size_t> pick(i, faces.size() - 1);
+    std::swap(faces[i], faces[pick(rng)]);
+  }
+  std::vector<Wrench> ows;
+  for (size_t i = 0; i < count; ++i) {
+    const Eigen::Vector3i& t = mesh.triangles[static_cast<size_t>(faces[i])];
+    const Eigen::Vector3d& a = mesh.vertices[t[0]];
+    const Eigen::Vector3d& b = mesh.vertices[t[1]];
+    const Eigen::Vector3d& c = mesh.vertices[t[2]];
+    Eigen::Vector3d n = (b - a).cross(c - a);
+    if (n.norm() <= 0.0) continue;
+    n.normalize();
+    const Eigen::Vector3d p = (a + b + c) / 3.0;
+    if ((p - out.center_O).dot(n) < 0.0) n = -n;
+    const auto w = contact_wrenches(p, n, params.simox_mu_eff, params.contact.cone_edges,
+                                    out.center_O, out.torque_scale_per_m);
+    ows.insert(ows.end(), w.begin(), w.end());
+  }
+  const WrenchHull hull = wrench_hull(ows);
+  out.ows_min_offset = hull.valid ? hull.min_centroid_distance : 0.0;
+  return out;
+}
+
+GraspQuality evaluate_grasp_quality(const std::vector<Contact>& contacts,
+                                    const WrenchSpaceObject& object, const QualityParams& params) {
+  GraspQuality out;
+  if (contacts.size() < 2) return out;
+  const double mu = mu_for(params);
+  std::vector<Wrench> w;
+  w.reserve(contacts.size() * static_cast<size_t>(params.contact.cone_edges));
+  for (const Contact& c : contacts) {
+    const auto cw =
+        contact_wrenches(c.p_O, c.n_O, mu, params.contact.cone_edges, object.center_O,
+                         object.torque_scale_per_m, params.contact.soft_finger_radius_m);
+    w.insert(w.end(), cw.begin(), cw.end());
+  }
+  // Most finger-stage results are not force closure: a small LP rules those out before the
+  // 6D hull (milliseconds) is built. Textbook mode only: simox mode accepts origins up to
+  // 1e-4 outside the hull, which the LP does not measure.
+  if (params.mode == QualityMode::kTextbook && full_rank(w) &&
+      min_weight_margin(w) <= kLpInteriorTolerance)
+    return out;
+  out.hull = wrench_hull(w);
+  if (!out.hull.valid) return out;
+  if (params.mode == QualityMode::kSimox) {
+    out.force_closure = out.hull.max_offset <= params.simox_fc_tolerance;
+    if (out.force_closure && object.ows_min_offset > 0.0)
+      out.epsilon = out.hull.min_centroid_distance / object.ows_min_offset;
+  } else {
+    out.force_closure = out.hull.min_origin_distance > params.min_epsilon;
+    if (out.force_closure) out.epsilon = out.hull.min_origin_distance;
+  }
+  return out;
+}
+
+}  // namespace cordgrasp

@@ -1,0 +1,112 @@
+#include "cordgrasp/core/plan_cord_grasps.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "cordgrasp/core/mesh_properties.h"
+#include "cordgrasp/core/palm_width.h"
+#include "cordgrasp/core/scan_cord_set.h"
+#include "cordgrasp/core/segment_mesh_hits.h"
+#include "plan_internal.h"
+
+namespace cordgrasp {
+
+double approach_travel_m(const Mesh& mesh, const GraspRegion& region) {
+  const Eigen::Vector3d v = region.p_m - region.p1;
+  const double fallback = v.norm();
+  if (fallback <= 0.0) return 0.0;
+  const Eigen::Vector3d z = v / fallback;
+  const Eigen::Vector3d c = vertex_mean(mesh);
+  const double reach = (region.p1 - c).norm() + bounding_radius(mesh, c);
+  const auto hits = segment_mesh_hits(mesh, region.p1, region.p1 + reach * z);  // spec §2.3
+  return hits.empty() ? fallback : hits.front().t * reach;
+}
+
+PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand,
+                                         HandObjectCollider& collider,
+                                         const std::vector<GraspRegion>& regions,
+                                         const PlanParams& params, double exploration_s,
+                                         const std::vector<int>* order_in) {
+  using internal::seconds_since;
+  const auto start = std::chrono::steady_clock::now();
+  PlanResult result;
+  PlanStats& stats = result.stats;
+  stats.exploration_s = exploration_s;
+  stats.regions = static_cast<int>(regions.size());
+  const internal::PlanContext ctx =
+      internal::make_plan_context(mesh, hand, collider, params, stats);
+
+  std::vector<size_t> order;
+  if (order_in) {
+    for (int i : *order_in)
+      if (i >= 0 && static_cast<size_t>(i) < regions.size())
+        order.push_back(static_cast<size_t>(i));
+  } else {
+    order.resize(regions.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return regions[a].chi_m2 < regions[b].chi_m2; });
+  }
+  const int wanted = std::max(1, params.grasps);
+  for (size_t rank = 0; rank < order.size(); ++rank) {
+    if (static_cast<int>(result.grasps.size()) >= wanted) break;
+    if (exploration_s + seconds_since(start) > params.time_limit_s) {
+      stats.timed_out = true;
+      break;
+    }
+    const GraspRegion& region = regions[order[rank]];
+    ++stats.regions_processed;
+    const double travel = approach_travel_m(mesh, region);
+    for (int roll = 0; roll < (params.roll_retry ? 2 : 1); ++roll) {
+      const Eigen::Isometry3d X_OG = gcp_pose_for_region(region, ctx.setup.R_GH, roll == 1);
+      Grasp grasp;
+      if (!internal::attempt_grasp(hand, collider, ctx, params, X_OG, travel, stats, grasp))
+        continue;
+      grasp.region_rank = static_cast<int>(rank);
+      grasp.chi_m2 = region.chi_m2;
+      grasp.times.exploration_s = exploration_s;
+      if (!stats.first_force_closure_s)
+        stats.first_force_closure_s = exploration_s + seconds_since(start);
+      result.grasps.push_back(std::move(grasp));
+      break;
+    }
+  }
+  if (static_cast<int>(result.grasps.size()) < wanted &&
+      exploration_s + seconds_since(start) > params.time_limit_s)
+    stats.timed_out = true;
+  stats.total_s = exploration_s + seconds_since(start);
+  return result;
+}
+
+std::vector<int> cord_region_order(const std::vector<GraspRegion>& regions, double palm_width_m,
+                                   const CordParams& cord) {
+  std::vector<int> order(regions.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::vector<char> shrunk(regions.size(), 0);
+  for (size_t i = 0; i < regions.size(); ++i) {
+    const GraspRegion& g = regions[i];
+    shrunk[i] = g.n < cords_per_side(g.p1, g.p2, g.p3, g.p_m, palm_width_m, cord) ? 1 : 0;
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    if (shrunk[static_cast<size_t>(a)] != shrunk[static_cast<size_t>(b)])
+      return shrunk[static_cast<size_t>(a)] < shrunk[static_cast<size_t>(b)];
+    return regions[static_cast<size_t>(a)].chi_m2 < regions[static_cast<size_t>(b)].chi_m2;
+  });
+  return order;
+}
+
+PlanResult plan_cord_grasps(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
+                            const CordParams& cord, const PlanParams& params,
+                            ExplorationStats* exploration) {
+  const auto start = std::chrono::steady_clock::now();
+  CordParams explore = cord;
+  if (explore.time_limit_s <= 0.0 || explore.time_limit_s > params.time_limit_s)
+    explore.time_limit_s = params.time_limit_s;
+  const double w_palm = palm_width(hand);
+  const std::vector<GraspRegion> regions = explore_cords(mesh, w_palm, explore, exploration);
+  const std::vector<int> order = cord_region_order(regions, w_palm, explore);
+  return plan_cord_grasps_from_regions(mesh, hand, collider, regions, params,
+                                       internal::seconds_since(start), &order);
+}
+
+}  // namespace cordgrasp

@@ -1,0 +1,85 @@
+#include "cordgrasp/core/plan_generic_grasps.h"
+
+#include <cmath>
+#include <random>
+
+#include "cordgrasp/core/mesh_properties.h"
+#include "cordgrasp/core/segment_mesh_hits.h"
+#include "plan_internal.h"
+
+namespace cordgrasp {
+
+Eigen::Vector3d outward_face_normal(const Mesh& mesh, int tri, const Eigen::Vector3d& p_O) {
+  const Eigen::Vector3i& t = mesh.triangles.at(static_cast<size_t>(tri));
+  const Eigen::Vector3d& a = mesh.vertices[t[0]];
+  Eigen::Vector3d n = (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a);
+  if (n.norm() <= 0.0) return Eigen::Vector3d::UnitZ();
+  n.normalize();
+  const Eigen::Vector3d c = vertex_mean(mesh);
+  const double reach = 2.0 * bounding_radius(mesh, c) + (p_O - c).norm() + 1.0;
+  // Start just off the surface so the ray does not count its own triangle.
+  const double lift = 1e-7 * reach;
+  const auto hits = segment_mesh_hits(mesh, p_O + lift * n, p_O + reach * n);  // spec §2.3
+  return hits.size() % 2 == 1 ? Eigen::Vector3d(-n) : n;
+}
+
+PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
+                               HandObjectCollider& collider, const PlanParams& params) {
+  using internal::seconds_since;
+  const auto start = std::chrono::steady_clock::now();
+  PlanResult result;
+  PlanStats& stats = result.stats;
+  const internal::PlanContext ctx =
+      internal::make_plan_context(mesh, hand, collider, params, stats);
+
+  // Area-weighted triangle sampling.
+  std::vector<double> areas(mesh.triangles.size(), 0.0);
+  for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const Eigen::Vector3i& t = mesh.triangles[i];
+    areas[i] = 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]])
+                         .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]])
+                         .norm();
+  }
+  std::discrete_distribution<int> pick_triangle(areas.begin(), areas.end());
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::mt19937_64 rng(params.seed);
+
+  const int wanted = std::max(1, params.grasps);
+  while (static_cast<int>(result.grasps.size()) < wanted) {
+    if (stats.attempts >= params.max_attempts) break;
+    if (seconds_since(start) > params.time_limit_s) {
+      stats.timed_out = true;
+      break;
+    }
+    const int tri = pick_triangle(rng);
+    const Eigen::Vector3i& t = mesh.triangles[static_cast<size_t>(tri)];
+    double u = unit(rng), v = unit(rng);
+    if (u + v > 1.0) {
+      u = 1.0 - u;
+      v = 1.0 - v;
+    }
+    const Eigen::Vector3d p = mesh.vertices[t[0]] +
+                              u * (mesh.vertices[t[1]] - mesh.vertices[t[0]]) +
+                              v * (mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+    const Eigen::Vector3d z = -outward_face_normal(mesh, tri, p);
+    const double roll = 2.0 * M_PI * unit(rng);
+    Eigen::Index axis = 0;
+    z.cwiseAbs().minCoeff(&axis);
+    const Eigen::Vector3d e = Eigen::Vector3d::Unit(axis);
+    Eigen::Vector3d x = (e - e.dot(z) * z).normalized();
+    x = Eigen::AngleAxisd(roll, z) * x;
+    Eigen::Isometry3d X_OG = Eigen::Isometry3d::Identity();
+    X_OG.linear().col(0) = x;
+    X_OG.linear().col(1) = z.cross(x);
+    X_OG.linear().col(2) = z;
+    X_OG.translation() = p;
+    Grasp grasp;
+    if (!internal::attempt_grasp(hand, collider, ctx, params, X_OG, 0.0, stats, grasp)) continue;
+    if (!stats.first_force_closure_s) stats.first_force_closure_s = seconds_since(start);
+    result.grasps.push_back(std::move(grasp));
+  }
+  stats.total_s = seconds_since(start);
+  return result;
+}
+
+}  // namespace cordgrasp

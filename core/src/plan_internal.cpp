@@ -1,0 +1,65 @@
+#include "plan_internal.h"
+
+#include "cordgrasp/core/mesh_properties.h"
+#include "cordgrasp/core/skewness.h"
+
+namespace cordgrasp::internal {
+
+PlanContext make_plan_context(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
+                              const PlanParams& params, PlanStats& stats) {
+  const auto start = std::chrono::steady_clock::now();
+  PlanContext ctx;
+  ctx.setup = prepare_hand(hand, collider);
+  ctx.wrench_object = prepare_wrench_space(mesh, params.quality);
+  ctx.principal_axis_O = principal_axes(mesh).axes.col(0);
+  stats.setup_s += seconds_since(start);
+  return ctx;
+}
+
+bool attempt_grasp(const HandModel& hand, HandObjectCollider& collider, const PlanContext& ctx,
+                   const PlanParams& params, const Eigen::Isometry3d& X_OG_start,
+                   double approach_travel_m, PlanStats& stats, Grasp& grasp) {
+  ++stats.attempts;
+  const auto t_finger = std::chrono::steady_clock::now();
+  const FingerResult fr =
+      run_finger_stage(hand, ctx.setup, collider, X_OG_start, approach_travel_m, params.finger);
+  const double finger_s = seconds_since(t_finger);
+  stats.finger_s += finger_s;
+  switch (fr.status) {
+    case FingerStatus::kOk:
+      break;
+    case FingerStatus::kNoContact:
+      ++stats.no_contact;
+      return false;
+    case FingerStatus::kOneContact:
+      ++stats.one_contact;
+      return false;
+    case FingerStatus::kCannotRetreat:
+      ++stats.cannot_retreat;
+      return false;
+  }
+  const auto t_quality = std::chrono::steady_clock::now();
+  const GraspQuality quality =
+      evaluate_grasp_quality(fr.contacts, ctx.wrench_object, params.quality);
+  const double quality_s = seconds_since(t_quality);
+  stats.quality_s += quality_s;
+  if (!quality.force_closure) {
+    ++stats.not_force_closure;
+    return false;
+  }
+  grasp = Grasp{};
+  grasp.X_OB = fr.X_OB;
+  grasp.X_OG = fr.X_OG;
+  grasp.q = fr.q;
+  grasp.q_preshape = fr.q_preshape;
+  grasp.contacts = fr.contacts;
+  grasp.force_closure = true;
+  grasp.epsilon = quality.epsilon;
+  grasp.alpha_rad = skewness_alpha_rad(fr.X_OG.linear().col(2), ctx.principal_axis_O);
+  grasp.times.finger_s = finger_s;
+  grasp.times.quality_s = quality_s;
+  ++stats.force_closure;
+  return true;
+}
+
+}  // namespace cordgrasp::internal

@@ -1,0 +1,109 @@
+// `cordgrasp plan`: plan.json contents, summary and errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "test_paths.h"
+
+namespace cordgrasp {
+namespace {
+
+std::string quoted(const std::string& path) { return "\"" + path + "\""; }
+
+std::string temp_path(const std::string& name) {
+  return (std::filesystem::temp_directory_path() /
+          ("cordgrasp_plan_test_" + std::to_string(::getpid()) + "_" + name))
+      .string();
+}
+
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+std::string shipped_object(const std::string& name) {
+  return test::source_dir() + "/assets/objects/" + name + ".obj";
+}
+
+TEST(CliPlan, CordPlanOnTheMugWritesEveryGraspField) {
+  const std::string out = temp_path("mug.json");
+  const test::CommandResult r =
+      test::run_cordgrasp("plan --object " + quoted(shipped_object("mug")) +
+                          " --grasps 2 --seed 3 --out " + quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("force closure"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("wrote " + out), std::string::npos) << r.output;
+  const nlohmann::json j = read_json(out);
+  EXPECT_EQ(j["format"], "cordgrasp-plan");
+  EXPECT_EQ(j["format_version"], 1);
+  EXPECT_FALSE(j["cordgrasp_version"].get<std::string>().empty());
+  EXPECT_EQ(j["inputs"]["hand"]["name"], "cordgrasp_sah");
+  EXPECT_TRUE(std::filesystem::path(j["inputs"]["hand"]["path"].get<std::string>()).is_absolute());
+  EXPECT_TRUE(
+      std::filesystem::path(j["inputs"]["object"]["path"].get<std::string>()).is_absolute());
+  EXPECT_EQ(j["parameters"]["planner"], "cord");
+  EXPECT_EQ(j["parameters"]["seed"], 3);
+  EXPECT_EQ(j["parameters"]["mu"], 0.5);
+  EXPECT_EQ(j["parameters"]["quality"], "textbook");
+  EXPECT_TRUE(j["parameters"]["cord"].contains("palm_width_m"));
+  ASSERT_EQ(j["grasps"].size(), 2u);
+  for (const auto& g : j["grasps"]) {
+    const auto& q = g["hand_pose"]["quaternion_wxyz"];
+    ASSERT_EQ(q.size(), 4u);
+    double norm = 0.0;
+    for (const auto& c : q) norm += c.get<double>() * c.get<double>();
+    EXPECT_NEAR(norm, 1.0, 1e-9);
+    EXPECT_EQ(g["hand_pose"]["position_m"].size(), 3u);
+    EXPECT_EQ(g["gcp_pose"]["position_m"].size(), 3u);
+    EXPECT_TRUE(g["joints"].contains("index_proximal"));
+    EXPECT_GE(g["contacts"].size(), 3u);
+    for (const auto& c : g["contacts"]) {
+      EXPECT_FALSE(c["link"].get<std::string>().empty());
+      EXPECT_EQ(c["point_m"].size(), 3u);
+      EXPECT_EQ(c["normal"].size(), 3u);
+    }
+    EXPECT_TRUE(g["force_closure"].get<bool>());
+    EXPECT_GT(g["epsilon"].get<double>(), 0.0);
+    EXPECT_GE(g["alpha_rad"].get<double>(), 0.0);
+    EXPECT_LE(g["alpha_rad"].get<double>(), M_PI / 4 + 1e-12);
+    EXPECT_TRUE(g["chi_m2"].is_number());
+    EXPECT_TRUE(g["region_rank"].is_number_integer());
+    EXPECT_TRUE(g["timings_s"].contains("finger"));
+  }
+  std::filesystem::remove(out);
+}
+
+TEST(CliPlan, GenericPlanHasNoRegionFields) {
+  const std::string out = temp_path("box.json");
+  const test::CommandResult r = test::run_cordgrasp(
+      "plan --planner generic --object " + quoted(shipped_object("box")) + " --out " + quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json j = read_json(out);
+  EXPECT_EQ(j["parameters"]["planner"], "generic");
+  ASSERT_EQ(j["grasps"].size(), 1u);
+  EXPECT_TRUE(j["grasps"][0]["chi_m2"].is_null());
+  EXPECT_TRUE(j["grasps"][0]["region_rank"].is_null());
+  std::filesystem::remove(out);
+}
+
+TEST(CliPlan, MissingObjectExitsNonZeroWithOneLine) {
+  const std::string missing = test::source_dir() + "/no_such_object.obj";
+  const test::CommandResult r = test::run_cordgrasp("plan --object " + quoted(missing) + " --out " +
+                                                    quoted(temp_path("x.json")));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("no_such_object.obj"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << r.output;
+}
+
+TEST(CliPlan, RejectsAnUnknownQualityMode) {
+  const test::CommandResult r = test::run_cordgrasp(
+      "plan --object " + quoted(shipped_object("box")) + " --quality ferrari --out x.json");
+  EXPECT_NE(r.exit_code, 0);
+}
+
+}  // namespace
+}  // namespace cordgrasp

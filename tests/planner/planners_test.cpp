@@ -1,0 +1,188 @@
+// Cord planner on hand-made regions and the generic baseline, with primitive hands.
+#include <gtest/gtest.h>
+
+#include "cordgrasp/core/plan_cord_grasps.h"
+#include "cordgrasp/core/plan_generic_grasps.h"
+#include "cordgrasp/core/shapes.h"
+#include "cordgrasp/sim/bullet_hand_collider.h"
+#include "test_hands.h"
+
+namespace cordgrasp {
+namespace {
+
+// Region seen from P1 = (d, 0, 0) in the cross-section z = 0 of a cylinder of radius r along z:
+// P_l, P_r are the silhouette (tangent) points, as Case I would find them.
+GraspRegion cylinder_region(double r, double d, double chi) {
+  GraspRegion g;
+  g.p1 = {d, 0.0, 0.0};
+  const double x = r * r / d, y = r * std::sqrt(1.0 - r * r / (d * d));
+  g.p_l = {x, y, 0.0};
+  g.p_r = {x, -y, 0.0};
+  g.p_m = 0.5 * (g.p_l + g.p_r);
+  g.normal = Eigen::Vector3d::UnitZ();
+  g.chi_m2 = chi;
+  return g;
+}
+
+TEST(PlanCordGrasps, FindsForceClosureOnHandMadeCylinderRegions) {
+  const Mesh cylinder = make_cylinder_mesh(0.015, 0.3);
+  const HandModel hand = test::make_three_finger_hand();
+  auto collider = make_bullet_hand_collider(hand, cylinder);
+  // The better region (lower χ) is given second: ranks follow χ, not input order.
+  const std::vector<GraspRegion> regions = {cylinder_region(0.015, 0.2, 2e-4),
+                                            cylinder_region(0.015, 0.15, 1e-4)};
+  PlanParams params;
+  params.grasps = 2;
+  const PlanResult plan =
+      plan_cord_grasps_from_regions(cylinder, hand, *collider, regions, params, 0.25);
+  ASSERT_EQ(plan.grasps.size(), 2u);
+  EXPECT_EQ(plan.stats.regions, 2);
+  EXPECT_EQ(plan.stats.regions_processed, 2);
+  EXPECT_EQ(plan.stats.force_closure, 2);
+  ASSERT_TRUE(plan.stats.first_force_closure_s.has_value());
+  EXPECT_GE(*plan.stats.first_force_closure_s, 0.25);
+  const Grasp& g = plan.grasps[0];
+  EXPECT_TRUE(g.force_closure);
+  EXPECT_GT(g.epsilon, 0.0);
+  EXPECT_EQ(g.region_rank, 0);
+  EXPECT_EQ(g.chi_m2, 1e-4);
+  EXPECT_EQ(plan.grasps[1].region_rank, 1);
+  EXPECT_EQ(g.times.exploration_s, 0.25);
+  EXPECT_GE(g.contacts.size(), 3u);
+  // Approach along −x, perpendicular to the cylinder axis z: α = 0.
+  EXPECT_NEAR(g.alpha_rad, 0.0, 1e-9);
+  EXPECT_TRUE(g.X_OG.linear().col(2).isApprox(-Eigen::Vector3d::UnitX(), 1e-12));
+  EXPECT_EQ(g.q.size(), static_cast<Eigen::Index>(hand.joints.size()));
+}
+
+TEST(PlanCordGrasps, StopsAtTheRequestedNumberOfGrasps) {
+  const Mesh cylinder = make_cylinder_mesh(0.015, 0.3);
+  const HandModel hand = test::make_three_finger_hand();
+  auto collider = make_bullet_hand_collider(hand, cylinder);
+  const std::vector<GraspRegion> regions(5, cylinder_region(0.015, 0.2, 1e-4));
+  const PlanResult plan = plan_cord_grasps_from_regions(cylinder, hand, *collider, regions, {});
+  EXPECT_EQ(plan.grasps.size(), 1u);
+  EXPECT_EQ(plan.stats.regions_processed, 1);
+}
+
+TEST(PlanCordGrasps, CountsBadCasesAndKeepsGoing) {
+  // A region approaching along the cylinder's axis from its centre: the palm straddles the
+  // surface and 20 retreat steps cannot free it; the next region works.
+  const Mesh cylinder = make_cylinder_mesh(0.015, 0.3);
+  const HandModel hand = test::make_three_finger_hand();
+  auto collider = make_bullet_hand_collider(hand, cylinder);
+  GraspRegion inside = cylinder_region(0.015, 0.2, 1e-5);
+  inside.p1 = {0.0, 0.0, 0.0};
+  inside.p_l = {0.01, 0.0, 0.1};
+  inside.p_r = {-0.01, 0.0, 0.1};
+  inside.p_m = {0.0, 0.0, 0.1};
+  PlanParams params;
+  params.finger.max_retreat_steps = 20;
+  const PlanResult plan = plan_cord_grasps_from_regions(
+      cylinder, hand, *collider, {inside, cylinder_region(0.015, 0.2, 1e-4)}, params);
+  ASSERT_EQ(plan.grasps.size(), 1u);
+  EXPECT_EQ(plan.grasps[0].region_rank, 1);
+  EXPECT_EQ(plan.stats.attempts, 3);  // region 0 as is and rolled, then region 1
+  EXPECT_EQ(plan.stats.attempts, plan.stats.force_closure + plan.stats.no_contact +
+                                     plan.stats.one_contact + plan.stats.cannot_retreat +
+                                     plan.stats.not_force_closure);
+}
+
+TEST(PlanCordGrasps, NoRegionsGiveNoGraspAndNoCrash) {
+  const Mesh box = make_box_mesh(Eigen::Vector3d::Constant(0.05));
+  const HandModel hand = test::make_three_finger_hand();
+  auto collider = make_bullet_hand_collider(hand, box);
+  const PlanResult plan = plan_cord_grasps_from_regions(box, hand, *collider, {}, {});
+  EXPECT_TRUE(plan.grasps.empty());
+  EXPECT_FALSE(plan.stats.first_force_closure_s.has_value());
+}
+
+TEST(OutwardFaceNormal, FlipsInwardWoundTrianglesByRayParity) {
+  Mesh box = make_box_mesh(Eigen::Vector3d::Constant(0.05));
+  for (size_t i = 0; i < box.triangles.size(); i += 2)
+    std::swap(box.triangles[i][1], box.triangles[i][2]);  // half the faces wound inwards
+  for (size_t i = 0; i < box.triangles.size(); ++i) {
+    const Eigen::Vector3i& t = box.triangles[i];
+    const Eigen::Vector3d p = (box.vertices[t[0]] + box.vertices[t[1]] + box.vertices[t[2]]) / 3.0;
+    const Eigen::Vector3d n = outward_face_normal(box, static_cast<int>(i), p);
+    EXPECT_GT(n.dot(p), 0.0) << "face " << i;  // box centred at the origin
+  }
+}
+
+TEST(OutwardFaceNormal, HandlesConcaveFacesInsideATorusHole) {
+  const Mesh torus = make_torus_mesh(0.05, 0.015);
+  int inner = 0;
+  for (size_t i = 0; i < torus.triangles.size(); ++i) {
+    const Eigen::Vector3i& t = torus.triangles[i];
+    const Eigen::Vector3d p =
+        (torus.vertices[t[0]] + torus.vertices[t[1]] + torus.vertices[t[2]]) / 3.0;
+    const Eigen::Vector2d radial = p.head<2>().normalized();
+    const Eigen::Vector3d tube_center(0.05 * radial.x(), 0.05 * radial.y(), 0.0);
+    const Eigen::Vector3d n = outward_face_normal(torus, static_cast<int>(i), p);
+    EXPECT_GT(n.dot(p - tube_center), 0.0) << "face " << i;
+    if ((p - tube_center).head<2>().dot(radial) < -0.01) ++inner;  // faces toward the hole
+  }
+  EXPECT_GT(inner, 0);  // the vertex-mean rule would get every one of these wrong
+}
+
+TEST(PlanGenericGrasps, FindsForceClosureGraspsOnABox) {
+  const Mesh box = make_box_mesh({0.04, 0.05, 0.06});
+  const HandModel hand = test::make_three_finger_hand();
+  auto collider = make_bullet_hand_collider(hand, box);
+  PlanParams params;
+  params.grasps = 3;
+  params.seed = 3;
+  params.time_limit_s = 30.0;
+  const PlanResult plan = plan_generic_grasps(box, hand, *collider, params);
+  ASSERT_EQ(plan.grasps.size(), 3u);
+  for (const Grasp& g : plan.grasps) {
+    EXPECT_TRUE(g.force_closure);
+    EXPECT_GT(g.epsilon, 0.0);
+    EXPECT_FALSE(g.region_rank.has_value());
+    EXPECT_GE(g.alpha_rad, 0.0);
+    EXPECT_LE(g.alpha_rad, M_PI / 4.0 + 1e-12);
+  }
+  EXPECT_GE(plan.stats.attempts, 3);
+  EXPECT_EQ(plan.stats.attempts, plan.stats.force_closure + plan.stats.no_contact +
+                                     plan.stats.one_contact + plan.stats.cannot_retreat +
+                                     plan.stats.not_force_closure);
+}
+
+TEST(PlanGenericGrasps, SameSeedSameGraspsDifferentSeedDifferentGrasps) {
+  const Mesh box = make_box_mesh({0.04, 0.05, 0.06});
+  const HandModel hand = test::make_three_finger_hand();
+  auto collider = make_bullet_hand_collider(hand, box);
+  PlanParams params;
+  params.grasps = 2;
+  params.time_limit_s = 30.0;
+  const PlanResult a = plan_generic_grasps(box, hand, *collider, params);
+  const PlanResult b = plan_generic_grasps(box, hand, *collider, params);
+  params.seed = 99;
+  const PlanResult c = plan_generic_grasps(box, hand, *collider, params);
+  ASSERT_EQ(a.grasps.size(), 2u);
+  ASSERT_EQ(b.grasps.size(), 2u);
+  ASSERT_FALSE(c.grasps.empty());
+  EXPECT_EQ(a.stats.attempts, b.stats.attempts);
+  for (size_t i = 0; i < 2; ++i) {
+    EXPECT_TRUE(a.grasps[i].X_OG.isApprox(b.grasps[i].X_OG, 0.0));
+    EXPECT_EQ(a.grasps[i].q, b.grasps[i].q);
+    EXPECT_EQ(a.grasps[i].epsilon, b.grasps[i].epsilon);
+  }
+  EXPECT_FALSE(a.grasps[0].X_OG.isApprox(c.grasps[0].X_OG, 1e-9));
+}
+
+TEST(PlanGenericGrasps, StopsAtMaxAttemptsWhenNothingCanHold) {
+  // The gripper is far too small for a 1 m cube: never force closure.
+  const Mesh big = make_box_mesh(Eigen::Vector3d::Constant(1.0));
+  const HandModel hand = test::make_parallel_gripper();
+  auto collider = make_bullet_hand_collider(hand, big);
+  PlanParams params;
+  params.max_attempts = 20;
+  const PlanResult plan = plan_generic_grasps(big, hand, *collider, params);
+  EXPECT_TRUE(plan.grasps.empty());
+  EXPECT_EQ(plan.stats.attempts, 20);
+  EXPECT_FALSE(plan.stats.timed_out);
+}
+
+}  // namespace
+}  // namespace cordgrasp
