@@ -330,10 +330,14 @@ FloorFrame floor_frame(const std::vector<const Scene*>& scenes, const RenderPara
   ff.top = hi;
   ff.footprint = std::max({ff.x1 - ff.x0, ff.y1 - ff.y0, ff.top - ff.floor, 1e-6});
   if (ff.ground && ff.has_content) {
-    // The floor under the scene (vertical projection of everything) must be in view too.
+    // The floor under the scene must be in view too: the vertical projection of everything low
+    // enough to leave a visible shadow (the shadow fades as exp(−height / (0.35 footprint))).
     const size_t n = ff.extent.size();
-    for (size_t i = 0; i < n; ++i)
-      ff.extent.push_back(ff.extent[i] - (ff.up.dot(ff.extent[i]) - ff.floor) * ff.up);
+    const double max_height = 0.5 * ff.footprint;
+    for (size_t i = 0; i < n; ++i) {
+      const double height = ff.up.dot(ff.extent[i]) - ff.floor;
+      if (height < max_height) ff.extent.push_back(ff.extent[i] - height * ff.up);
+    }
   }
   return ff;
 }

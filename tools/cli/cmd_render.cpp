@@ -10,14 +10,17 @@
 
 #include "commands.h"
 #include "cordgrasp/core/error.h"
+#include "cordgrasp/core/explore_cords.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/mesh_properties.h"
+#include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/render/contact_sheet.h"
 #include "cordgrasp/render/png_io.h"
 #include "cordgrasp/render/renderer.h"
 #include "hand_scene.h"
+#include "plan_json.h"
 #include "region_json.h"
 #include "render_options.h"
 
@@ -32,6 +35,10 @@ struct RenderCommandOptions {
   std::vector<std::string> joints;  // NAME=VALUE
   bool collision = false;
   bool no_visual = false;
+  std::string plan;    // plan.json
+  int grasp = 0;       // 0-based, as `cordgrasp plan` prints them
+  bool cones = false;  // friction cones instead of normal arrows
+  bool no_cords = false;
   std::string regions;  // explore --json file
   int region = 1;       // 1-based rank
   int sheet = 0;        // > 0: the first N as a contact sheet
@@ -194,18 +201,143 @@ void run_render_hand(const RenderCommandOptions& opt) {
             << ", view " << view_name(params.view.view) << ")\n";
 }
 
+// The cord planner's regions, recomputed from the parameters a plan recorded (exploration is
+// deterministic for a seed unless its time limit was hit), in the planner's processing order.
+// Empty, with a warning, when they cannot be rebuilt.
+std::vector<GraspRegion> replay_exploration(const PlanDocument& plan, const Mesh& mesh) {
+  if (plan.planner != "cord" || !plan.parameters.contains("cord")) return {};
+  try {
+    const nlohmann::json& c = plan.parameters.at("cord");
+    CordParams cord;
+    cord.r2_margin_m = c.at("r2_margin_m").get<double>();
+    cord.delta_r_m = c.at("delta_r_m").get<double>();
+    cord.xi_min_m = c.at("xi_min_m").get<double>();
+    cord.xi_max_m = c.at("xi_max_m").get<double>();
+    cord.scan_angle_rad = c.at("scan_angle_rad").get<double>();
+    const std::string side = c.at("side_cords").get<std::string>();
+    cord.side_cord_policy = side == "discard"  ? SideCordPolicy::kDiscardSet
+                            : side == "shrink" ? SideCordPolicy::kShrink
+                                               : SideCordPolicy::kEmptyWhenMissed;
+    cord.sphere_points = c.at("sphere_points").get<int>();
+    cord.max_iterations = c.at("max_iterations").get<int>();
+    cord.sets = c.at("sets").get<int>();
+    cord.local_improvement = c.at("local_improvement").get<bool>();
+    cord.perturbations_per_set = c.at("perturbations_per_set").get<int>();
+    cord.seed = c.at("seed").get<std::uint64_t>();
+    cord.time_limit_s = std::min(c.at("time_limit_s").get<double>(),
+                                 plan.parameters.value("time_limit_s", cord.time_limit_s));
+    const double palm_width_m = c.at("palm_width_m").get<double>();
+    std::vector<GraspRegion> regions = explore_cords(mesh, palm_width_m, cord);
+    std::vector<GraspRegion> ordered;
+    for (int i : cord_region_order(regions, palm_width_m, cord)) ordered.push_back(regions[i]);
+    return ordered;
+  } catch (const std::exception& e) {
+    std::cerr << "cordgrasp: warning: cannot replay the cord exploration of the plan (" << e.what()
+              << "); cords are not drawn\n";
+    return {};
+  }
+}
+
+// The region grasp `g` came from, if the replayed exploration reproduces its χ exactly.
+const GraspRegion* region_of(const Grasp& g, const std::vector<GraspRegion>& regions) {
+  if (!g.region_rank || *g.region_rank < 0 || *g.region_rank >= static_cast<int>(regions.size()))
+    return nullptr;
+  const GraspRegion& r = regions[*g.region_rank];
+  constexpr double kChiRelTol = 1e-9;
+  if (g.chi_m2 && std::abs(r.chi_m2 - *g.chi_m2) > kChiRelTol * std::abs(*g.chi_m2)) return nullptr;
+  return &r;
+}
+
+// A plan: grasp K (object frame as world) with the hand, contacts and the cords of its region,
+// or with --sheet N the first N grasps as a contact sheet.
+void run_render_plan(const RenderCommandOptions& opt) {
+  const nlohmann::json json = read_plan_json(opt.plan);
+  const HandModel hand = load_hand(plan_hand_path(json));
+  const PlanDocument plan = plan_from_json(json, hand);
+  const int count = static_cast<int>(plan.grasps.size());
+  if (count == 0) throw InputError("render: '" + opt.plan + "': the plan holds no grasp");
+  const int first = opt.sheet > 0 ? 0 : opt.grasp;
+  const int last = opt.sheet > 0 ? std::min(count, opt.sheet) - 1 : opt.grasp;
+  if (first < 0 || first >= count)
+    throw InputError("render: --grasp " + std::to_string(opt.grasp) + ": '" + opt.plan +
+                     "' has grasps 0.." + std::to_string(count - 1));
+  MeshLoadOptions load;
+  load.units = parse_length_units(plan.object_units);
+  const auto object = std::make_shared<const Mesh>(load_mesh(plan.object_path, load));
+  const std::vector<GraspRegion> regions =
+      opt.no_cords ? std::vector<GraspRegion>{} : replay_exploration(plan, *object);
+
+  HandStyle hand_style;
+  hand_style.collision = opt.collision;
+  hand_style.visual = !opt.no_visual;
+  if (!hand_style.visual && !hand_style.collision)
+    throw InputError("render: --no-visual needs --collision (nothing would be drawn)");
+  const HandMeshes meshes = make_hand_meshes(hand, hand_style);
+  OverlayStyle overlay;
+  overlay.friction_cones = opt.cones;
+  overlay.friction_coefficient = plan.parameters.value("mu", overlay.friction_coefficient);
+  overlay.cords = !opt.no_cords;
+  overlay.p1 = opt.picture.view != "approach";
+  const std::string who = plan.object_name + " · " + plan.hand_name + " · " + plan.planner;
+
+  Renderer renderer;
+  std::vector<Image> tiles;
+  std::vector<std::string> captions;
+  RenderParams params;
+  int missing_cords = 0;
+  for (int k = first; k <= last; ++k) {
+    const Grasp& g = plan.grasps[k];
+    const GraspRegion* region = region_of(g, regions);
+    missing_cords += g.region_rank && !region && !opt.no_cords;
+    Scene scene = grasp_scene(hand, meshes, object, g, region, overlay);
+    const std::string quality = "α = " + fixed(g.alpha_rad, 3) +
+                                " rad · ε = " + fixed(g.epsilon, 4) +
+                                (g.force_closure ? " · force closure" : " · not force closure");
+    scene.caption =
+        who + " · grasp " + std::to_string(k) + " of " + std::to_string(count) + " · " + quality;
+    params = render_params(opt.picture, scene, g.X_OG.linear().col(2));  // approach: GCP +z
+    if (opt.sheet > 0) {
+      captions.push_back(opt.picture.no_caption
+                             ? ""
+                             : "#" + std::to_string(k) + " · α = " + fixed(g.alpha_rad, 2) +
+                                   " rad · ε = " + fixed(g.epsilon, 4));
+      scene.caption.clear();
+    }
+    tiles.push_back(renderer.render(scene, params));
+  }
+  if (missing_cords > 0)
+    std::cerr << "cordgrasp: warning: the replayed exploration did not reproduce the region of "
+              << missing_cords
+              << " grasp(s) (time limit hit while planning?); their cords are "
+                 "not drawn\n";
+  ContactSheetParams sheet;
+  if (!opt.picture.no_caption)
+    sheet.title = who + " · first " + std::to_string(tiles.size()) + " of " +
+                  std::to_string(count) + " grasps";
+  const Image image = opt.sheet > 0 ? compose_contact_sheet(tiles, captions, sheet) : tiles[0];
+  write_png(opt.out, image);
+  std::cout << "render: wrote " << opt.out << " (" << image.width << "x" << image.height
+            << ", view " << view_name(params.view.view) << ")\n";
+}
+
 void run_render(const RenderCommandOptions& opt) {
-  const int modes =
-      !opt.regions.empty() + !opt.hand.empty() + (opt.regions.empty() && !opt.objects.empty());
+  const int modes = !opt.plan.empty() + !opt.regions.empty() + !opt.hand.empty() +
+                    (opt.plan.empty() && opt.regions.empty() && !opt.objects.empty());
   if (modes != 1)
-    throw InputError("render: give one of --object FILE..., --hand HAND or --regions FILE");
-  if (opt.regions.empty() && opt.sheet > 0)
-    throw InputError("render: --sheet needs --regions (or, later, --plan)");
+    throw InputError(
+        "render: give one of --plan FILE, --object FILE..., --hand HAND or --regions FILE");
+  if (opt.plan.empty() && opt.regions.empty() && opt.sheet > 0)
+    throw InputError("render: --sheet needs --plan or --regions");
   if (opt.regions.empty() && opt.region != 1) throw InputError("render: --region needs --regions");
+  if (opt.plan.empty() && opt.grasp != 0) throw InputError("render: --grasp needs --plan");
+  if (!opt.plan.empty() && !opt.objects.empty())
+    throw InputError("render: --plan names its object; drop --object");
   if (!opt.regions.empty() && opt.objects.size() > 1)
     throw InputError("render: --regions takes at most one --object");
   check_output_file(opt.out);
-  if (!opt.regions.empty())
+  if (!opt.plan.empty())
+    run_render_plan(opt);
+  else if (!opt.regions.empty())
     run_render_regions(opt);
   else if (!opt.hand.empty())
     run_render_hand(opt);
@@ -220,8 +352,8 @@ CORDGRASP_REGISTER_COMMAND(60, add_render_command);
 
 void add_render_command(CLI::App& app) {
   auto opt = std::make_shared<RenderCommandOptions>();
-  CLI::App* cmd =
-      app.add_subcommand("render", "Render objects, hands or grasp regions to PNG offscreen");
+  CLI::App* cmd = app.add_subcommand(
+      "render", "Render plans, grasp regions, hands or objects to PNG offscreen");
   cmd->add_option("--object,-o", opt->objects,
                   "Object mesh file to show; several: a contact sheet, --size per tile");
   cmd->add_option(
@@ -233,6 +365,16 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--joint", opt->joints, "With --hand: set a joint, NAME=VALUE (rad or m)");
   cmd->add_flag("--collision", opt->collision, "Also show collision shapes (translucent)");
   cmd->add_flag("--no-visual", opt->no_visual, "With --collision: collision shapes only");
+  cmd->add_option("--plan", opt->plan,
+                  "plan.json from `cordgrasp plan`: a grasp with the hand, its contacts and its "
+                  "region's cords");
+  cmd->add_option("--grasp", opt->grasp, "With --plan: which grasp (0 = first, as plan prints)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_flag("--cones", opt->cones,
+                "With --plan: friction cones (half-angle atan mu) instead of normal arrows");
+  cmd->add_flag("--no-cords", opt->no_cords,
+                "With --plan: no cords (skips replaying the cord exploration)");
   cmd->add_option("--regions", opt->regions,
                   "Grasp regions from `cordgrasp explore --json`: the object with a region's "
                   "front cords and P1 (dark), P_l (magenta), P_r (teal)");
@@ -240,7 +382,7 @@ void add_render_command(CLI::App& app) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->add_option("--sheet", opt->sheet,
-                  "With --regions: the N best as a contact sheet, --size per tile")
+                  "With --plan or --regions: the first N as a contact sheet, --size per tile")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--units", opt->units, "Units of the object file: m, mm or auto")
       ->check(CLI::IsMember({"m", "mm", "auto"}))

@@ -146,12 +146,12 @@ void add_contact_overlay(Scene& scene, const std::vector<Contact>& contacts,
                          const OverlayStyle& style) {
   if (!style.contacts) return;
   const Rgba contact_rgba(0.95, 0.80, 0.10, 1.0), normal_rgba(0.12, 0.12, 0.12, 1.0);
-  const double r = style.point_radius_rel * object_radius_m;
+  const double r = style.contact_radius_rel * object_radius_m;
   const double length = style.normal_length_rel * object_radius_m;
   for (const Contact& c : contacts) {
     const Eigen::Vector3d p_W = X_WO * c.p_O;
     const Eigen::Vector3d n_W = X_WO.linear() * c.n_O;
-    scene.points.push_back({p_W, r, contact_rgba});
+    scene.points.push_back({p_W, r, contact_rgba, style.contacts_on_top});
     if (n_W.norm() == 0.0) continue;
     if (style.friction_cones) {
       SceneCone cone;
@@ -160,14 +160,16 @@ void add_contact_overlay(Scene& scene, const std::vector<Contact>& contacts,
       cone.height_m = length;
       cone.half_angle_rad = std::atan(style.friction_coefficient);
       cone.rgba = Rgba(0.95, 0.70, 0.10, 0.35);
+      cone.on_top = style.contacts_on_top;
       scene.cones.push_back(cone);
     } else {
       SceneArrow arrow;
       arrow.p_W = p_W;
       arrow.direction_W = n_W;
       arrow.length_m = length;
-      arrow.shaft_radius_m = 0.25 * r;
+      arrow.shaft_radius_m = 0.2 * r;
       arrow.rgba = normal_rgba;
+      arrow.on_top = style.contacts_on_top;
       scene.arrows.push_back(arrow);
     }
   }

@@ -64,11 +64,13 @@ struct OverlayStyle {
   bool region_points = true;          ///< P_l, P_r (and P1) as small spheres
   bool p1 = true;                     ///< P1 too (off when looking along P1 → P_m)
   bool contacts = true;               ///< contact points as spheres
+  bool contacts_on_top = true;        ///< contacts drawn over the hand (they lie under fingers)
   bool friction_cones = false;        ///< cones (half-angle atan μ) instead of normal arrows
   double friction_coefficient = 0.5;  ///< μ for the cones
   double cord_width_px = 2.5;         ///< side cords; the seed cord is 1.6× wider
-  double point_radius_rel = 0.035;    ///< sphere radius / r
-  double normal_length_rel = 0.35;    ///< arrow or cone height / r
+  double point_radius_rel = 0.035;    ///< P_l, P_r, P1 sphere radius / r
+  double contact_radius_rel = 0.05;   ///< contact sphere radius / r
+  double normal_length_rel = 0.45;    ///< arrow or cone height / r
 };
 
 /// Adds a region's front cords (coloured from cool to warm across the scan, the seed cord
