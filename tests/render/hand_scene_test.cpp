@@ -330,9 +330,10 @@ TEST(WriteSnapshots, OnePngPerFrameNamedByStemAndPhase) {
   fs::create_directories(dir);
   const HandModel hand = toy_hand();
   const auto X_WL = link_poses(hand, Eigen::VectorXd::Zero(4));
-  std::vector<SnapshotFrame> frames(2);
-  frames[0].X_WL = frames[1].X_WL = X_WL;
+  std::vector<SnapshotFrame> frames(3);
+  frames[0].X_WL = frames[1].X_WL = frames[2].X_WL = X_WL;
   frames[0].name = "settled";
+  frames[2].name = "gravity6 -x";
   Renderer renderer;
   RenderParams params;
   params.width_px = 64;
@@ -340,9 +341,10 @@ TEST(WriteSnapshots, OnePngPerFrameNamedByStemAndPhase) {
   params.supersample = 1;
   const auto paths =
       write_snapshots(renderer, hand, nullptr, frames, dir.string(), "grasp3", params);
-  ASSERT_EQ(paths.size(), 2u);
+  ASSERT_EQ(paths.size(), 3u);
   EXPECT_EQ(fs::path(paths[0]).filename(), "grasp3_settled.png");
   EXPECT_EQ(fs::path(paths[1]).filename(), "grasp3_1.png");
+  EXPECT_EQ(fs::path(paths[2]).filename(), "grasp3_gravity6_-x.png");
   for (const auto& p : paths) {
     const Image image = read_png(p);
     EXPECT_EQ(image.width, 64);

@@ -1,6 +1,7 @@
 #include "hand_scene.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -233,7 +234,10 @@ std::vector<std::string> write_snapshots(Renderer& renderer, const HandModel& ha
       render_snapshots(renderer, hand, std::move(object), frames, params, style);
   std::vector<std::string> paths;
   for (size_t i = 0; i < images.size(); ++i) {
-    const std::string name = frames[i].name.empty() ? std::to_string(i) : frames[i].name;
+    std::string name = frames[i].name.empty() ? std::to_string(i) : frames[i].name;
+    for (char& c : name)  // "gravity6 -x" → "gravity6_-x": no spaces or slashes in file names
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '+' && c != '.')
+        c = '_';
     paths.push_back((fs::path(dir) / (stem + "_" + name + ".png")).string());
     write_png(paths.back(), images[i]);
   }

@@ -109,7 +109,8 @@ std::vector<Image> render_snapshots(Renderer& renderer, const HandModel& hand,
                                     const RenderParams& params, const HandStyle& style = {});
 
 /// render_snapshots, then writes frame i to <dir>/<stem>_<frames[i].name>.png (or
-/// <stem>_<i>.png when the name is empty), atomically; returns the paths in frame order.
+/// <stem>_<i>.png when the name is empty; characters other than letters, digits, '-', '+' and
+/// '.' become '_'), atomically; returns the paths in frame order.
 /// @throws InputError when `dir` does not exist or a file cannot be written.
 std::vector<std::string> write_snapshots(Renderer& renderer, const HandModel& hand,
                                          std::shared_ptr<const Mesh> object,
