@@ -8,7 +8,6 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <optional>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -26,9 +25,6 @@ namespace {
 constexpr int kDim = 6;
 // Relative singular-value threshold below which the wrench set is taken as lower-dimensional.
 constexpr double kRankTolerance = 1e-9;
-// LP weight margin at or below which the origin is taken as outside the hull (pre-check only:
-// the hull decides the rest; far below the margins of grasps with ε > min_epsilon).
-constexpr double kLpInteriorTolerance = 1e-11;
 
 // Unit tangent pair (t1, t2) ⊥ n, deterministic: t1 is the coordinate axis least aligned with n,
 // projected onto the tangent plane; t2 = n × t1.
@@ -51,88 +47,6 @@ bool full_rank(const std::vector<Wrench>& w) {
   const auto& s = svd.singularValues();
   if (s(0) <= 0.0) return false;
   return s(kDim - 1) > kRankTolerance * s(0);
-}
-
-// Dense two-phase simplex (Bland's rule): minimise d·x subject to A x = b, x ≥ 0, b ≥ 0.
-// Returns the optimal objective, or nullopt when infeasible. Small problems only (7 rows).
-std::optional<double> simplex_min(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
-                                  const Eigen::VectorXd& d) {
-  constexpr double kTol = 1e-12;
-  const Eigen::Index m = A.rows(), n = A.cols();
-  // Tableau columns: x (n), artificials (m), rhs.
-  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(m, n + m + 1);
-  T.leftCols(n) = A;
-  T.block(0, n, m, m).setIdentity();
-  T.col(n + m) = b;
-  std::vector<Eigen::Index> basis(static_cast<size_t>(m));
-  for (Eigen::Index i = 0; i < m; ++i) basis[static_cast<size_t>(i)] = n + i;
-
-  auto run = [&](const Eigen::VectorXd& cost, Eigen::Index allowed) {
-    for (int iteration = 0; iteration < 10000; ++iteration) {
-      Eigen::Index enter = -1;
-      for (Eigen::Index j = 0; j < allowed && enter < 0; ++j) {
-        double z = cost[j];
-        for (Eigen::Index i = 0; i < m; ++i) z -= cost[basis[static_cast<size_t>(i)]] * T(i, j);
-        if (z < -kTol) enter = j;
-      }
-      if (enter < 0) return true;  // optimal
-      Eigen::Index leave = -1;
-      double best = 0.0;
-      for (Eigen::Index i = 0; i < m; ++i) {
-        if (T(i, enter) <= kTol) continue;
-        const double ratio = T(i, n + m) / T(i, enter);
-        if (leave < 0 || ratio < best - kTol ||
-            (ratio <= best + kTol &&
-             basis[static_cast<size_t>(i)] < basis[static_cast<size_t>(leave)])) {
-          leave = i;
-          best = ratio;
-        }
-      }
-      if (leave < 0) return false;  // unbounded
-      T.row(leave) /= T(leave, enter);
-      for (Eigen::Index i = 0; i < m; ++i)
-        if (i != leave && T(i, enter) != 0.0) T.row(i) -= T(i, enter) * T.row(leave);
-      basis[static_cast<size_t>(leave)] = enter;
-    }
-    return false;
-  };
-
-  Eigen::VectorXd phase1 = Eigen::VectorXd::Zero(n + m);
-  phase1.tail(m).setOnes();
-  if (!run(phase1, n + m)) return std::nullopt;
-  double infeasibility = 0.0;
-  for (Eigen::Index i = 0; i < m; ++i)
-    if (basis[static_cast<size_t>(i)] >= n) infeasibility += T(i, n + m);
-  if (infeasibility > 1e-9) return std::nullopt;
-  Eigen::VectorXd phase2 = Eigen::VectorXd::Zero(n + m);
-  phase2.head(n) = d;
-  phase2.tail(m).setConstant(1e6);  // artificials at zero must not re-enter profitably
-  if (!run(phase2, n)) return std::nullopt;
-  double value = 0.0;
-  for (Eigen::Index i = 0; i < m; ++i) value += phase2[basis[static_cast<size_t>(i)]] * T(i, n + m);
-  return value;
-}
-
-// Largest t such that 0 = Σ λ_i w_i with Σ λ_i = 1 and every λ_i ≥ t (LP). For wrenches that
-// span R^6, the origin is strictly inside their hull iff t > 0; −1 when it is not in the hull.
-double min_weight_margin(const std::vector<Wrench>& w) {
-  const Eigen::Index n = static_cast<Eigen::Index>(w.size());
-  // Variables: μ_i = λ_i − t ≥ 0 (n of them) and t ≥ 0.
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(kDim + 1, n + 1);
-  Wrench sum = Wrench::Zero();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    A.block(0, i, kDim, 1) = w[static_cast<size_t>(i)];
-    A(kDim, i) = 1.0;
-    sum += w[static_cast<size_t>(i)];
-  }
-  A.block(0, n, kDim, 1) = sum;
-  A(kDim, n) = static_cast<double>(n);
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(kDim + 1);
-  b[kDim] = 1.0;
-  Eigen::VectorXd d = Eigen::VectorXd::Zero(n + 1);
-  d[n] = -1.0;  // maximise t
-  const auto value = simplex_min(A, b, d);
-  return value ? -*value : -1.0;
 }
 
 double mu_for(const QualityParams& params) {
@@ -279,12 +193,6 @@ GraspQuality evaluate_grasp_quality(const std::vector<Contact>& contacts,
                          object.torque_scale_per_m, params.contact.soft_finger_radius_m);
     w.insert(w.end(), cw.begin(), cw.end());
   }
-  // Most finger-stage results are not force closure: a small LP rules those out before the
-  // 6D hull (milliseconds) is built. Textbook mode only: simox mode accepts origins up to
-  // 1e-4 outside the hull, which the LP does not measure.
-  if (params.mode == QualityMode::kTextbook && full_rank(w) &&
-      min_weight_margin(w) <= kLpInteriorTolerance)
-    return out;
   out.hull = wrench_hull(w);
   if (!out.hull.valid) return out;
   if (params.mode == QualityMode::kSimox) {

@@ -80,7 +80,9 @@ TEST(CordPlanner, AlignsWithTheLongCylinderFarBetterThanRandomApproaches) {
 }
 
 // The generic baseline approaches along face normals; on a polygonal cylinder every face normal
-// is radial or axial, so its α is exactly 0 and no planner can beat it there.
+// is radial or axial, so its α is exactly 0 and no planner can beat it there (issue 4 asked for
+// mean α(cord) < mean α(generic) on this object: impossible against a Simox-faithful baseline;
+// [P]'s comparison used scanned KIT meshes, whose normals are noisy).
 TEST(GenericPlanner, HasZeroSkewnessOnAPolygonalCylinder) {
   const HandModel hand = load_hand(default_hand_name());
   const Mesh cylinder = load_mesh(shipped_object("long_cylinder"));
@@ -90,24 +92,6 @@ TEST(GenericPlanner, HasZeroSkewnessOnAPolygonalCylinder) {
   const PlanResult plan = plan_generic_grasps(cylinder, hand, *collider, params);
   ASSERT_EQ(plan.grasps.size(), 10u);
   for (const Grasp& g : plan.grasps) EXPECT_NEAR(g.alpha_rad, 0.0, 1e-6);
-}
-
-// Issue 4 asks for mean α(cord) < mean α(generic) on the long cylinder ([P] Fig. 11/12). With
-// the generic planner approaching along exact face normals that cannot hold (previous test:
-// its α is 0 there); [P]'s comparison used scanned KIT meshes, whose normals are noisy.
-// Disabled, kept to show the measurement: run with --gtest_also_run_disabled_tests.
-TEST(CordPlanner, DISABLED_SkewsLessThanTheGenericPlannerOnTheLongCylinder) {
-  const HandModel hand = load_hand(default_hand_name());
-  const Mesh cylinder = load_mesh(shipped_object("long_cylinder"));
-  auto collider = make_bullet_hand_collider(hand, cylinder);
-  const double cord_alpha = mean_cord_alpha(hand, cylinder, *collider);
-  PlanParams generic = plan_params();
-  generic.grasps = 10;
-  const PlanResult baseline = plan_generic_grasps(cylinder, hand, *collider, generic);
-  ASSERT_EQ(baseline.grasps.size(), 10u);
-  double generic_alpha = 0.0;
-  for (const Grasp& g : baseline.grasps) generic_alpha += g.alpha_rad / 10.0;
-  EXPECT_LT(cord_alpha, generic_alpha);
 }
 
 TEST(CordPlanner, SameSeedGivesTheSameGrasp) {

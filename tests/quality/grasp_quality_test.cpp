@@ -243,8 +243,9 @@ TEST(GraspQuality, SimoxOwsIsDeterministicForASeed) {
   EXPECT_NE(prepare_wrench_space(sphere, p).ows_min_offset, a);
 }
 
-// The LP pre-check must never change the verdict of the hull (origin deeper than min_epsilon).
-TEST(GraspQuality, LinearProgramPrecheckAgreesWithTheHullOnRandomGrasps) {
+// The verdict and ε of evaluate_grasp_quality are those of the raw wrench hull (origin deeper
+// than min_epsilon), on random grasps of both outcomes.
+TEST(GraspQuality, VerdictAndEpsilonAreThoseOfTheWrenchHullOnRandomGrasps) {
   std::mt19937_64 rng(17);
   std::normal_distribution<double> gauss;
   const WrenchSpaceObject object = unit_object(2.0 / 0.1);
