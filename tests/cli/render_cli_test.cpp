@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "test_paths.h"
@@ -143,6 +144,40 @@ TEST(CliRender, BadRegionsFileIsNamed) {
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find(bad), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("missing field"), std::string::npos) << r.output;
+}
+
+TEST(CliRender, PlanGraspsMayCarryTheirRegion) {
+  TempDir dir;
+  const std::string plan = (dir.path / "plan.json").string();
+  const std::string out = (dir.path / "g.png").string();
+  auto r = test::run_cordgrasp("plan --object " +
+                               quoted(test::source_dir() + "/assets/objects/box.obj") +
+                               " --grasps 1 --out " + quoted(plan));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  nlohmann::json j;
+  std::ifstream(plan) >> j;
+  j["grasps"][0]["region"] = {{"p1", {0.2, 0, 0.04}},
+                              {"p2", {0, 0.1, 0.04}},
+                              {"p3", {0, -0.1, 0.04}},
+                              {"normal", {0, 0, 1}},
+                              {"p_l", {0, 0.025, 0.04}},
+                              {"p_r", {0, -0.025, 0.04}},
+                              {"p_m", {0, 0, 0.04}},
+                              {"case", "I"},
+                              {"n", 0},
+                              {"front_cords", {{{0.025, -0.025, 0.04}, {0.025, 0.025, 0.04}}}},
+                              {"xi_m", 0.03},
+                              {"chi_m2", 1e-5}};
+  std::ofstream(plan) << j.dump();
+  r = test::run_cordgrasp("render --plan " + quoted(plan) + " --size 80x60 --out " + quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(png_size(out), std::make_pair(80u, 60u));
+  j["grasps"][0]["region"].erase("front_cords");
+  std::ofstream(plan) << j.dump();
+  r = test::run_cordgrasp("render --plan " + quoted(plan) + " --size 80x60 --out " + quoted(out));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("grasp 0: region: missing field 'front_cords'"), std::string::npos)
+      << r.output;
 }
 
 TEST(CliRender, BadSizeIsOneLineErrorNamingIt) {

@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -264,8 +265,11 @@ void run_render_plan(const RenderCommandOptions& opt) {
   MeshLoadOptions load;
   load.units = parse_length_units(plan.object_units);
   const auto object = std::make_shared<const Mesh>(load_mesh(plan.object_path, load));
-  const std::vector<GraspRegion> regions =
-      opt.no_cords ? std::vector<GraspRegion>{} : replay_exploration(plan, *object);
+  bool stored_regions = true;  // every grasp carries its region: no need to replay
+  for (int k = first; k <= last; ++k) stored_regions &= json.at("grasps").at(k).contains("region");
+  const std::vector<GraspRegion> regions = opt.no_cords || stored_regions
+                                               ? std::vector<GraspRegion>{}
+                                               : replay_exploration(plan, *object);
 
   HandStyle hand_style;
   hand_style.collision = opt.collision;
@@ -287,7 +291,18 @@ void run_render_plan(const RenderCommandOptions& opt) {
   int missing_cords = 0;
   for (int k = first; k <= last; ++k) {
     const Grasp& g = plan.grasps[k];
-    const GraspRegion* region = region_of(g, regions);
+    // A region stored with the grasp (region_to_json) wins over the replayed exploration.
+    std::optional<GraspRegion> stored;
+    const nlohmann::json& gj = json.at("grasps").at(k);
+    if (!opt.no_cords && gj.contains("region") && !gj["region"].is_null()) {
+      try {
+        stored = region_from_json(gj["region"]);
+      } catch (const InputError& e) {
+        throw InputError("render: '" + opt.plan + "': grasp " + std::to_string(k) + ": " +
+                         e.what());
+      }
+    }
+    const GraspRegion* region = stored ? &*stored : region_of(g, regions);
     missing_cords += g.region_rank && !region && !opt.no_cords;
     Scene scene = grasp_scene(hand, meshes, object, g, region, overlay);
     const std::string quality = "α = " + fixed(g.alpha_rad, 3) +
