@@ -254,7 +254,13 @@ const GraspRegion* region_of(const Grasp& g, const std::vector<GraspRegion>& reg
 void run_render_plan(const RenderCommandOptions& opt) {
   const nlohmann::json json = read_plan_json(opt.plan);
   const HandModel hand = load_hand(plan_hand_path(json));
-  const PlanDocument plan = plan_from_json(json, hand);
+  const PlanDocument plan = [&] {
+    try {
+      return plan_from_json(json, hand);
+    } catch (const InputError& e) {
+      throw InputError("render: '" + opt.plan + "': " + e.what());
+    }
+  }();
   const int count = static_cast<int>(plan.grasps.size());
   if (count == 0) throw InputError("render: '" + opt.plan + "': the plan holds no grasp");
   const int first = opt.sheet > 0 ? 0 : opt.grasp;
@@ -266,7 +272,7 @@ void run_render_plan(const RenderCommandOptions& opt) {
   load.units = parse_length_units(plan.object_units);
   const auto object = std::make_shared<const Mesh>(load_mesh(plan.object_path, load));
   bool stored_regions = true;  // every grasp carries its region: no need to replay
-  for (int k = first; k <= last; ++k) stored_regions &= json.at("grasps").at(k).contains("region");
+  for (int k = first; k <= last; ++k) stored_regions &= plan.grasps[k].region.has_value();
   const std::vector<GraspRegion> regions = opt.no_cords || stored_regions
                                                ? std::vector<GraspRegion>{}
                                                : replay_exploration(plan, *object);
@@ -291,18 +297,9 @@ void run_render_plan(const RenderCommandOptions& opt) {
   int missing_cords = 0;
   for (int k = first; k <= last; ++k) {
     const Grasp& g = plan.grasps[k];
-    // A region stored with the grasp (region_to_json) wins over the replayed exploration.
-    std::optional<GraspRegion> stored;
-    const nlohmann::json& gj = json.at("grasps").at(k);
-    if (!opt.no_cords && gj.contains("region") && !gj["region"].is_null()) {
-      try {
-        stored = region_from_json(gj["region"]);
-      } catch (const InputError& e) {
-        throw InputError("render: '" + opt.plan + "': grasp " + std::to_string(k) + ": " +
-                         e.what());
-      }
-    }
-    const GraspRegion* region = stored ? &*stored : region_of(g, regions);
+    // A region stored with the grasp wins over the replayed exploration.
+    const GraspRegion* region =
+        opt.no_cords ? nullptr : g.region ? &*g.region : region_of(g, regions);
     missing_cords += g.region_rank && !region && !opt.no_cords;
     Scene scene = grasp_scene(hand, meshes, object, g, region, overlay);
     const std::string quality = "α = " + fixed(g.alpha_rad, 3) +
