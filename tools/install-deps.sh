@@ -14,6 +14,7 @@ PKGS=(
   libpolyclipping-dev                     # Clipper 6.4.2, for the XOR measure
   nlohmann-json3-dev
   libpng-dev
+  libfreetype-dev fonts-dejavu-core      # render: caption text (FreeType + DejaVu Sans)
   libyaml-cpp-dev                         # hand description files
   libembree-dev                           # ray queries on large meshes
   libgtest-dev libgmock-dev googletest

@@ -64,6 +64,7 @@ PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand
         continue;
       grasp.region_rank = static_cast<int>(rank);
       grasp.chi_m2 = region.chi_m2;
+      grasp.region = region;
       grasp.times.exploration_s = exploration_s;
       if (!stats.first_force_closure_s)
         stats.first_force_closure_s = exploration_s + seconds_since(start);

@@ -1,5 +1,7 @@
 #include "plan_json.h"
 
+#include "region_json.h"
+
 #include <fstream>
 #include <sstream>
 
@@ -117,6 +119,7 @@ nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand) {
          {"alpha_rad", g.alpha_rad},
          {"chi_m2", optional_json(g.chi_m2)},
          {"region_rank", g.region_rank ? nlohmann::json(*g.region_rank) : nlohmann::json(nullptr)},
+         {"region", g.region ? region_to_json(*g.region) : nlohmann::json(nullptr)},
          {"timings_s",
           {{"exploration", g.times.exploration_s},
            {"finger", g.times.finger_s},
@@ -209,6 +212,13 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand) {
       if (g.contains("chi_m2") && !g["chi_m2"].is_null()) grasp.chi_m2 = g["chi_m2"].get<double>();
       if (g.contains("region_rank") && !g["region_rank"].is_null())
         grasp.region_rank = g["region_rank"].get<int>();
+      if (g.contains("region") && !g["region"].is_null()) {
+        try {
+          grasp.region = region_from_json(g["region"]);
+        } catch (const InputError& e) {
+          throw InputError("plan: grasp " + std::to_string(p.grasps.size()) + ": " + e.what());
+        }
+      }
       const auto t = g.value("timings_s", nlohmann::json::object());
       grasp.times.exploration_s = t.value("exploration", 0.0);
       grasp.times.finger_s = t.value("finger", 0.0);

@@ -14,6 +14,7 @@
 //             joints: {name: value} (after closing), preshape_joints: {name: value},
 //             contacts: [{link, point_m, normal}] (object frame, normal out of the object),
 //             force_closure, epsilon, alpha_rad, chi_m2 (null: generic), region_rank (null),
+//             region (null: generic; layout of region_json.h: cords, P1, P_l, P_r, ...),
 //             timings_s: {exploration, finger, quality}}]
 #include <cstdint>
 #include <nlohmann/json.hpp>

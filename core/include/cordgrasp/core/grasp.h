@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "cordgrasp/core/grasp_region.h"
+
 namespace cordgrasp {
 
 /// A finger–object contact (spec §7.4), in the object frame.
@@ -34,6 +36,7 @@ struct Grasp {
   double alpha_rad = 0.0;          ///< skewness α (spec §9) [rad], in [0, π/4]
   std::optional<int> region_rank;  ///< cord planner: rank of the region (0 = lowest χ)
   std::optional<double> chi_m2;    ///< cord planner: χ of that region [m²]
+  std::optional<GraspRegion> region;  ///< cord planner: the region itself (cords, P1, P_l, P_r)
   StageTimes times;
 };
 
