@@ -194,7 +194,7 @@ nlohmann::json read_sim_json(const std::string& path) {
 
 SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const Mesh& mesh,
                           const SimParams& params, const SimTests& tests, int max_grasps,
-                          const ValidateProgress& progress) {
+                          const ValidateProgress& progress, const GraspPhaseHooks& hooks) {
   const auto start = std::chrono::steady_clock::now();
   SimDocument doc;
   doc.hand_name = plan.hand_name;
@@ -211,7 +211,8 @@ SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const
                                    : std::min(max_grasps, static_cast<int>(plan.grasps.size()));
   for (int k = 0; k < total; ++k) {
     const Grasp& g = plan.grasps[static_cast<size_t>(k)];
-    doc.results.push_back(validate_grasp(mesh, hand, g, params, tests));
+    doc.results.push_back(
+        validate_grasp(mesh, hand, g, params, tests, hooks ? hooks(k) : PhaseHook{}));
     doc.grasps.push_back(g);
     doc.grasp_indices.push_back(k);
     if (progress) progress(k + 1, total, doc.results.back());

@@ -66,10 +66,15 @@ nlohmann::json read_sim_json(const std::string& path);
 /// Called after each grasp: (done, total, result).
 using ValidateProgress = std::function<void(int, int, const SimResult&)>;
 
-/// Validates the first `max_grasps` grasps of `plan` (all when < 0) on `mesh` with `hand`.
+/// Gives the phase hook (may be empty) for the grasp with this index in the plan.
+using GraspPhaseHooks = std::function<PhaseHook(int grasp_index)>;
+
+/// Validates the first `max_grasps` grasps of `plan` (all when < 0) on `mesh` with `hand`;
+/// `hooks` (optional) sees the world at every phase end of each grasp (snapshots).
 SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const Mesh& mesh,
                           const SimParams& params, const SimTests& tests, int max_grasps = -1,
-                          const ValidateProgress& progress = {});
+                          const ValidateProgress& progress = {},
+                          const GraspPhaseHooks& hooks = {});
 
 /// "held (lift held, shake held, gravity6 held) mass 0.12 kg, 0.41 s"
 std::string sim_result_line(const SimResult& result);

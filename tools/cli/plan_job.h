@@ -1,0 +1,40 @@
+#pragma once
+// One planning job (object + hand + planner parameters -> PlanDocument), shared by
+// `cordgrasp plan`, `run` and `bench` so the three agree on every option and default.
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <string>
+
+#include "cordgrasp/core/contact_model.h"
+#include "cordgrasp/core/hand_model.h"
+#include "cordgrasp/core/mesh.h"
+#include "plan_json.h"
+
+namespace cordgrasp::cli {
+
+/// Planner options as the CLI takes them (units in names; defaults are the CLI's).
+struct PlanJobParams {
+  std::string planner = "cord";  ///< cord (Li et al. 2015) or generic (Simox-style baseline)
+  int grasps = 1;                ///< stop after this many force-closure grasps
+  double time_limit_s = 10.0;    ///< wall-clock limit of the plan [s]
+  std::uint64_t seed = 1;        ///< seed of every random choice
+  double mu = kDefaultFrictionCoefficient;  ///< friction coefficient (planner and physics)
+  double soft_finger_radius_m = 0.0;        ///< contact patch radius; 0 = point contacts
+  std::string side_cords = "empty";         ///< empty, discard or shrink (SideCordPolicy)
+  std::string quality = "textbook";         ///< textbook or simox (spec §8)
+  std::string units = "m";                  ///< object file units: m, mm or auto
+};
+
+/// Adds the planner options (--planner, --grasps, --time-limit, --seed, --mu,
+/// --soft-finger-radius, --side-cords, --quality, --units) to `cmd`, bound to `p`.
+void add_plan_job_options(CLI::App* cmd, PlanJobParams& p);
+
+/// Plans grasps on `mesh` (loaded from `object_path`) with `hand`: the document plan.json
+/// holds. Deterministic for a given seed (timings aside).
+PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::string& object_path,
+                      const HandModel& hand);
+
+/// Absolute, normalized path.
+std::string absolute_path(const std::string& path);
+
+}  // namespace cordgrasp::cli
