@@ -77,6 +77,12 @@ void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
   cmd->add_option("--units", p.units, "Units of the object file: m, mm or auto")
       ->check(CLI::IsMember({"m", "mm", "auto"}))
       ->capture_default_str();
+  cmd->add_option("--sets", p.cord_sets, "Cord: valid sets to sample before local improvement")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_flag_callback(
+      "--no-local-improvement", [&p]() { p.cord_local_improvement = false; },
+      "Cord: skip the local improvement of the sampled sets");
 }
 
 PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::string& object_path,
@@ -124,6 +130,8 @@ PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::strin
     CordParams cord;
     cord.seed = p.seed;
     cord.time_limit_s = p.time_limit_s;
+    cord.sets = p.cord_sets;
+    cord.local_improvement = p.cord_local_improvement;
     cord.side_cord_policy = p.side_cords == "discard"  ? SideCordPolicy::kDiscardSet
                             : p.side_cords == "shrink" ? SideCordPolicy::kShrink
                                                          : SideCordPolicy::kEmptyWhenMissed;

@@ -23,10 +23,13 @@ struct PlanJobParams {
   std::string side_cords = "empty";         ///< empty, discard or shrink (SideCordPolicy)
   std::string quality = "textbook";         ///< textbook or simox (spec §8)
   std::string units = "m";                  ///< object file units: m, mm or auto
+  int cord_sets = 20;                       ///< cord: valid sets sampled (K, spec §4)
+  bool cord_local_improvement = true;       ///< cord: local improvement of the sets (§5)
 };
 
 /// Adds the planner options (--planner, --grasps, --time-limit, --seed, --mu,
-/// --soft-finger-radius, --side-cords, --quality, --units) to `cmd`, bound to `p`.
+/// --soft-finger-radius, --side-cords, --quality, --units, --sets, --no-local-improvement) to
+/// `cmd`, bound to `p`.
 void add_plan_job_options(CLI::App* cmd, PlanJobParams& p);
 
 /// Plans grasps on `mesh` (loaded from `object_path`) with `hand`: the document plan.json
