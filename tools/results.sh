@@ -93,5 +93,6 @@ end=$(date +%s)
 load="$(cut -d' ' -f1-3 /proc/loadavg)"
 python3 "$ROOT/tools/results_report.py" --in-dir "$OUT" --mode "$MODE" \
   --fig11-runs "$FIG11_RUNS" --phys-repeats "$PHYS_REPEATS" --phys-hands "$PHYS_HANDS" \
-  --wall-s $((end - start)) --jobs "$JOBS" --load "$load" --notes "$ROOT/docs/results-notes.md" --out "$MD"
+  --wall-s $((end - start)) --jobs "$JOBS" --load "$load" \
+  --commit "$(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo unknown)" --notes "$ROOT/docs/results-notes.md" --out "$MD"
 echo "wrote $MD (raw outputs in $OUT)" >&2

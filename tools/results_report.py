@@ -279,6 +279,7 @@ def main():
     ap.add_argument("--jobs", default="")
     ap.add_argument("--notes", default="")
     ap.add_argument("--load", default="", help="load average at the end of the run")
+    ap.add_argument("--commit", default="", help="git commit the executable was built from")
     ap.add_argument("--out", required=True)
     a = ap.parse_args()
     load = a.load.split()
@@ -290,6 +291,8 @@ def main():
     out.append(f"- Machine: {machine()}; load average (1, 5, 15 min) at the end of the run {' '.join(load)} (the machine "
                "was shared with other jobs: wall-clock times are inflated, not comparable to the "
                "paper's Core i5 at 3.4 GHz)." if load else f"- Machine: {machine()}.")
+    if a.commit:
+        out.append(f"- Code: commit `{a.commit}`.")
     out.append(f"- Run: {a.mode} protocol, {a.jobs} bench threads, {a.wall_s // 60} min "
                f"{a.wall_s % 60} s wall time for all experiments.")
     if a.mode != "full":

@@ -397,7 +397,8 @@ BenchInputs::BenchInputs(const BenchParams& params, const std::vector<BenchAttem
   for (const BenchAttempt& a : attempts) {
     if (!loaded->meshes.count(a.object_path) && !loaded->errors.count("object:" + a.object_path)) {
       try {
-        loaded->meshes[a.object_path] = std::make_shared<const Mesh>(load_mesh(a.object_path, load));
+        loaded->meshes[a.object_path] =
+            std::make_shared<const Mesh>(load_mesh(a.object_path, load));
       } catch (const std::exception& e) {
         loaded->errors["object:" + a.object_path] = e.what();
       }
