@@ -63,6 +63,18 @@ TEST(CliRun, DefaultsWritePlanSimReportAndPictures) {
                 e.path().extension() == ".md")
         << e.path();
   EXPECT_TRUE(r.output.empty() || r.output.find("run [") == std::string::npos) << r.output;
+
+  // validate on the written plan reproduces run's physics exactly.
+  const auto v = run_cordgrasp("validate --plan " + quoted(dir.file("plan.json")) +
+                               " --tests lift,shake -q --out " + quoted(dir.file("again.json")));
+  ASSERT_EQ(v.exit_code, 0) << v.output;
+  const nlohmann::json again = read_json(dir.file("again.json"));
+  for (size_t k = 0; k < n; ++k) {
+    EXPECT_EQ(again["grasps"][k]["outcome"], sim["grasps"][k]["outcome"]) << k;
+    EXPECT_EQ(again["grasps"][k]["phases"].back()["translation_m"],
+              sim["grasps"][k]["phases"].back()["translation_m"])
+        << k;
+  }
 }
 
 TEST(CliRun, ProgressGoesToStderrUnlessQuiet) {

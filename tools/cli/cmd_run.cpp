@@ -100,6 +100,9 @@ void run(const RunOptions& opt) {
   const PlanDocument& plan = report.plan;
   const std::string plan_path = (fs::path(opt.out_dir) / "plan.json").string();
   write_plan_file(plan_path, plan, hand);
+  // Physics sees the plan as written (poses as quaternions), so `cordgrasp validate --plan
+  // plan.json` later reproduces these outcomes exactly.
+  const PlanDocument written = plan_from_json(read_plan_json(plan_path), hand);
   const int n = static_cast<int>(plan.grasps.size());
   progress.say("plan: " + std::to_string(n) + " force-closure grasp(s), " +
                std::to_string(plan.stats.attempts) + " attempts");
@@ -134,7 +137,7 @@ void run(const RunOptions& opt) {
       };
     };
     sim = validate_plan(
-        plan, hand, *mesh, params, tests, -1,
+        written, hand, *mesh, params, tests, -1,
         [&](int done, int total, const SimResult& r) {
           progress.say("physics: grasp " + std::to_string(done) + "/" + std::to_string(total) +
                        " " + sim_result_line(r));
