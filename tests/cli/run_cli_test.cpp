@@ -114,6 +114,21 @@ TEST(CliRun, UnknownObjectNameIsOneLineErrorListingTheShippedOnes) {
   EXPECT_TRUE(fs::is_empty(dir.path));
 }
 
+TEST(CliRun, MillimetreFileReadAsMetersIsWarnedAboutAndAutoReadsItAsMillimetres) {
+  TempDir dir;
+  const std::string box = quoted(test::test_data("meshes/box_100mm.obj"));
+  const std::string rest = " --tests none --no-render --time-limit 1 --quiet --out-dir " +
+                           quoted(dir.path.string());
+  const auto as_m = run_cordgrasp("run --object " + box + rest);
+  EXPECT_NE(as_m.output.find("m across: if the file is in millimetres, give --units mm"),
+            std::string::npos)
+      << as_m.output;
+  const auto as_auto = run_cordgrasp("run --units auto --object " + box + rest);
+  EXPECT_NE(as_auto.output.find("--units auto read the file as millimetres"), std::string::npos)
+      << as_auto.output;
+  EXPECT_EQ(as_auto.output.find("m across"), std::string::npos) << as_auto.output;
+}
+
 TEST(CliRun, BadTestNameFailsBeforePlanning) {
   TempDir dir;
   const auto r =

@@ -83,9 +83,7 @@ void run(const RunOptions& opt) {
   fs::create_directories(opt.out_dir);
 
   const std::string object_path = resolve_object_path(opt.object);
-  MeshLoadOptions load;
-  load.units = parse_length_units(opt.job.units);
-  const auto mesh = std::make_shared<const Mesh>(load_mesh(object_path, load));
+  const auto mesh = std::make_shared<const Mesh>(load_job_mesh(opt.job, object_path));
   const HandModel hand = load_hand(opt.hand);
 
   // 1. Plan.
