@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs missing Debian packages, builds (Release, -j2) and runs the main job on the shipped
-# default hand and object. Usage: tools/demo.sh [output dir, default ./demo-out]
+# default hand (cordgrasp_sah) and object (mug): plan with the cord planner, check the grasps in
+# Bullet (lift, shake), render them. Usage: tools/demo.sh [output dir, default ./demo-out]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${CORDGRASP_BUILD_DIR:-$root/build}"
@@ -8,7 +9,5 @@ out="${1:-$PWD/demo-out}"
 "$root/tools/install-deps.sh"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j2 --target cordgrasp
-mkdir -p "$out"
-"$build/tools/cordgrasp" info --hand cordgrasp_sah | tee "$out/hand-info.txt"
-"$build/tools/cordgrasp" info --object "$root/assets/objects/mug.obj" | tee "$out/object-info.txt"
-echo "demo: outputs in $out"
+"$build/tools/cordgrasp" run --out-dir "$out"
+echo "demo: outputs in $out (open $out/report.md; pictures $out/*.png)"

@@ -288,76 +288,116 @@ void close_fingers(const HandModel& hand, const HandSetup& setup, HandObjectColl
     return false;
   };
 
-  // Step of each actor's own joints (mimic followers come from apply_couplings).
-  std::vector<Eigen::VectorXd> delta(num_actors, Eigen::VectorXd::Zero(q.size()));
-  std::vector<double> max_step(num_actors, 0.0);
+  // Simox EndEffectorActor::moveActorCheckCollision ([S14]): within an iteration each joint of an
+  // actor moves on its own (mimic followers through apply_couplings) and is reverted alone when
+  // the actor then collides; the actor is finished when none of its joints can move. A finger
+  // whose proximal link touches keeps curling its outer joints (it wraps) instead of freezing.
+  struct JointStep {
+    Eigen::VectorXd delta;  // one closing step of this joint (and, via couplings, followers)
+    double size = 0.0;      // |step| of the joint [rad or m]
+    bool blocked = false;   // reverted on collision or at its limit
+  };
+  std::vector<std::vector<JointStep>> steps(num_actors);
   for (size_t a = 0; a < num_actors; ++a) {
     for (const auto& e : hand.actors[a].joints) {
-      delta[a][e.joint] = params.close_step * e.direction_speed;
-      max_step[a] = std::max(max_step[a], std::abs(delta[a][e.joint]));
+      JointStep js;
+      js.delta = Eigen::VectorXd::Zero(q.size());
+      js.delta[e.joint] = params.close_step * e.direction_speed;
+      js.size = std::abs(js.delta[e.joint]);
+      js.blocked = js.size <= 0.0;
+      steps[a].push_back(std::move(js));
     }
   }
+  auto actor_moves = [&](size_t a, const Eigen::VectorXd& q_try) {
+    for (int j : setup.actor_joints[a])
+      if (q_try[j] != q[j]) return true;
+    return false;
+  };
+  // Moves one joint of actor a by its full step; on a hit, bisects down to the last free pose
+  // (stopping once a link is within the contact tolerance of the object). Returns true when the
+  // joint moved by its full step (it may keep going).
+  auto step_joint = [&](size_t a, JointStep& js, bool bisect) {
+    const Eigen::VectorXd q_try = coupled(hand, q + js.delta);
+    if (!actor_moves(a, q_try)) {  // at its limit
+      js.blocked = true;
+      return false;
+    }
+    set_actor_poses(a, q_try);
+    Hit hit = actor_hit(a);
+    if (hit == Hit::kNone) {
+      q = q_try;
+      return true;
+    }
+    set_actor_poses(a, q);
+    js.blocked = true;
+    if (!bisect) return false;
+    double lo = 0.0, hi = 1.0;
+    bool done = hit == Hit::kObject && near_object(a);
+    for (int it = 0; !done && it < kMaxBisections; ++it) {
+      if ((hi - lo) * js.size < kMinBisectionStep) break;
+      const double mid = 0.5 * (lo + hi);
+      const Eigen::VectorXd q_mid = coupled(hand, q + mid * js.delta);
+      set_actor_poses(a, q_mid);
+      const Hit h = actor_hit(a);
+      if (h != Hit::kNone) {
+        hi = mid;
+        hit = h;
+      } else {
+        lo = mid;
+        done = hit == Hit::kObject && near_object(a);
+      }
+    }
+    q = coupled(hand, q + lo * js.delta);
+    set_actor_poses(a, q);
+    return false;
+  };
+  auto actor_finished = [&](size_t a) {
+    for (const JointStep& js : steps[a])
+      if (!js.blocked) return false;
+    return true;
+  };
 
-  std::vector<char> finished(num_actors, 0);
-  for (size_t a = 0; a < num_actors; ++a) finished[a] = max_step[a] <= 0.0;
   int iterations = 0;
-  while (iterations < params.max_close_iterations &&
-         std::find(finished.begin(), finished.end(), 0) != finished.end()) {
-    ++iterations;
-    for (size_t a = 0; a < num_actors; ++a) {
-      if (finished[a]) continue;
-      const Eigen::VectorXd q_try = coupled(hand, q + delta[a]);
-      bool moved = false;
-      for (int j : setup.actor_joints[a]) moved = moved || q_try[j] != q[j];
-      if (!moved) {  // every joint at its limit
-        finished[a] = 1;
-        continue;
-      }
-      set_actor_poses(a, q_try);
-      Hit hit = actor_hit(a);
-      if (hit == Hit::kNone) {
-        q = q_try;
-        continue;
-      }
-      // Bisect the step between the free q (t = 0) and the colliding q_try (t = 1).
-      double lo = 0.0, hi = 1.0;
-      set_actor_poses(a, q);
-      bool done = hit == Hit::kObject && near_object(a);
-      for (int it = 0; !done && it < kMaxBisections; ++it) {
-        if ((hi - lo) * max_step[a] < kMinBisectionStep) break;
-        const double mid = 0.5 * (lo + hi);
-        const Eigen::VectorXd q_mid = coupled(hand, q + mid * delta[a]);
-        set_actor_poses(a, q_mid);
-        const Hit h = actor_hit(a);
-        if (h != Hit::kNone) {
-          hi = mid;
-          hit = h;
-        } else {
-          lo = mid;
-          done = hit == Hit::kObject && near_object(a);
-        }
-      }
-      q = coupled(hand, q + lo * delta[a]);
-      set_actor_poses(a, q);
-      finished[a] = 1;
+  while (iterations < params.max_close_iterations) {
+    bool any_open = false;
+    for (size_t a = 0; a < num_actors; ++a) any_open = any_open || !actor_finished(a);
+    if (!any_open) {
+      // Simox re-runs closeActors from the reached joint values until a pass moves nothing
+      // (§7.4.4): a joint stopped by another finger may be free once that finger has stopped.
+      // Re-test each blocked joint with one full step, without bisection (no creeping).
+      bool reopened = false;
+      for (size_t a = 0; a < num_actors; ++a)
+        for (JointStep& js : steps[a])
+          if (js.size > 0.0 && step_joint(a, js, false)) {
+            js.blocked = false;
+            reopened = true;
+          }
+      ++iterations;
+      if (!reopened) break;
+      continue;
     }
+    ++iterations;
+    for (size_t a = 0; a < num_actors; ++a)
+      for (JointStep& js : steps[a])
+        if (!js.blocked) step_joint(a, js, true);
   }
-
   result.q = q;
   result.close_iterations = iterations;
   result.contacts.clear();
   collider.set_link_poses(link_poses(hand, q, X_OB));
-  for (size_t a = 0; a < num_actors; ++a) {
-    for (int l : setup.actor_links[a]) {
-      const auto prox = collider.link_object_proximity(l, params.contact_tolerance_m);
-      if (!prox) continue;
-      Contact c;
-      c.link = l;
-      c.p_O = prox->p_object_O;
-      c.n_O = prox->n_O;
-      result.contacts.push_back(c);
-    }
-  }
+  auto add_contact = [&](int l) {
+    const auto prox = collider.link_object_proximity(l, params.contact_tolerance_m);
+    if (!prox) return;
+    Contact c;
+    c.link = l;
+    c.p_O = prox->p_object_O;
+    c.n_O = prox->n_O;
+    result.contacts.push_back(c);
+  };
+  for (size_t a = 0; a < num_actors; ++a)
+    for (int l : setup.actor_links[a]) add_contact(l);
+  if (params.static_link_contacts)
+    for (int l : setup.static_links) add_contact(l);
   const int count = static_cast<int>(result.contacts.size());
   result.status = count == 0                    ? FingerStatus::kNoContact
                   : count < params.min_contacts ? FingerStatus::kOneContact
@@ -407,6 +447,9 @@ FingerResult run_finger_stage(const HandModel& hand, const HandSetup& setup,
     colliding = hand_collides(X_OG);
     if (!colliding) free_until = travel + hand_lower_bound();
   }
+  // Travel at which the hand first collided (approach) or was last seen colliding (retreat).
+  double colliding_travel = travel;
+  bool refine = colliding && r.approach_steps > 0;  // the previous approach step was free
   while (colliding) {
     if (r.retreat_steps >= params.max_retreat_steps) {
       r.status = FingerStatus::kCannotRetreat;
@@ -414,9 +457,26 @@ FingerResult run_finger_stage(const HandModel& hand, const HandSetup& setup,
       r.X_OB = X_OG * setup.X_GB;
       return r;
     }
+    colliding_travel = travel;
+    travel -= params.retreat_step_m;
     X_OG.translation() -= params.retreat_step_m * z;
     ++r.retreat_steps;
     colliding = hand_collides(X_OG);
+    refine = true;
+  }
+  // Finer steps near contact (as when closing): bisect between the free pose and the colliding
+  // one so the hand ends within the contact tolerance of the object, not up to a step away.
+  if (refine && params.contact_tolerance_m > 0.0) {
+    double lo = travel, hi = colliding_travel;
+    while (hi - lo > 0.5 * params.contact_tolerance_m) {
+      const double mid = 0.5 * (lo + hi);
+      if (hand_collides(X_OG_start * Eigen::Translation3d(0, 0, mid)))
+        hi = mid;
+      else
+        lo = mid;
+    }
+    travel = lo;
+    X_OG = X_OG_start * Eigen::Translation3d(0, 0, lo);
   }
   r.X_OG = X_OG;
   r.X_OB = X_OG * setup.X_GB;

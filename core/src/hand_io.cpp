@@ -20,6 +20,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "cordgrasp/core/assets.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/geometry_points.h"
 #include "cordgrasp/core/kinematics.h"
@@ -661,12 +662,6 @@ void check_size(const HandModel& hand) {
       << " m): the URDF looks like it is in millimetres; URDF lengths must be meters";
     fail(hand.urdf_path, s.str());
   }
-}
-
-std::string assets_dir() {
-  const char* env = std::getenv("CORDGRASP_ASSETS_DIR");
-  if (env && *env) return env;
-  return CORDGRASP_ASSETS_DIR;
 }
 
 }  // namespace

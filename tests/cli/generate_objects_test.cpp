@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "test_files.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
@@ -20,17 +21,7 @@ std::string read_bytes(const fs::path& path) {
   return s.str();
 }
 
-/// A fresh empty directory under the system temp folder, removed at scope exit.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() /
-           ("cordgrasp-objects-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
+using test::TempDir;
 
 TEST(CliGenerateObjects, RegeneratesTheShippedObjectsByteForByte) {
   TempDir dir;

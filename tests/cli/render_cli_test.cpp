@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "test_files.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
@@ -14,33 +15,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string quoted(const std::string& path) { return "\"" + path + "\""; }
-
-// Width and height from a PNG's IHDR chunk (bytes 16..23, big-endian); (0, 0) if not a PNG.
-std::pair<std::uint32_t, std::uint32_t> png_size(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  unsigned char h[24] = {0};
-  in.read(reinterpret_cast<char*>(h), sizeof h);
-  const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-  if (!in || !std::equal(sig, sig + 8, h)) return {0, 0};
-  const auto be32 = [&h](int i) {
-    return (std::uint32_t(h[i]) << 24) | (std::uint32_t(h[i + 1]) << 16) |
-           (std::uint32_t(h[i + 2]) << 8) | std::uint32_t(h[i + 3]);
-  };
-  return {be32(16), be32(20)};
-}
-
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() /
-           ("cordgrasp_render_cli_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
+using test::png_size;
+using test::quoted;
+using test::TempDir;
 
 const std::string kMug = test::source_dir() + "/assets/objects/mug.obj";
 

@@ -10,6 +10,7 @@
 
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
+#include "test_files.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
@@ -130,6 +131,28 @@ TEST_F(ValidateCli, MuOverrideOfZeroDropsEveryGrasp) {
   const nlohmann::json sim = read_out();
   EXPECT_EQ(sim["parameters"]["mu"], 0.0);
   EXPECT_EQ(sim["grasps"][0]["outcome"], "dropped");
+}
+
+TEST_F(ValidateCli, SnapshotsWriteOnePngPerGraspAndPhase) {
+  const std::filesystem::path shots = dir_ / "shots";
+  std::filesystem::create_directories(shots);
+  const auto r = run_cordgrasp("validate --plan " + plan_path() + " --tests lift -q --snapshots " +
+                               shots.string() + " --out " + out_path());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const std::string k : {"0", "1"})
+    for (const std::string phase : {"settle", "close", "lift"})
+      EXPECT_EQ(test::png_size((shots / ("grasp_" + k + "_" + phase + ".png")).string()),
+                std::make_pair(800u, 600u))
+          << k << " " << phase;
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(shots), {}), 6);
+}
+
+TEST_F(ValidateCli, SnapshotsIntoAMissingFolderIsAnErrorBeforeSimulating) {
+  const auto r = run_cordgrasp("validate --plan " + plan_path() + " --snapshots " +
+                               (dir_ / "nowhere").string() + " --out " + out_path());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("--snapshots"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out_path()));
 }
 
 TEST_F(ValidateCli, PlanForAnotherHandIsAnError) {

@@ -61,9 +61,7 @@ void print_summary(const PlanDocument& doc, const HandModel& hand, const std::st
 }
 
 void run_plan(const PlanOptions& opt) {
-  MeshLoadOptions load;
-  load.units = parse_length_units(opt.job.units);
-  const Mesh mesh = load_mesh(opt.object, load);
+  const Mesh mesh = load_job_mesh(opt.job, opt.object);
   const HandModel hand = load_hand(opt.hand);
   const PlanDocument doc = plan_job(opt.job, mesh, opt.object, hand);
   write_plan_file(opt.out, doc, hand);

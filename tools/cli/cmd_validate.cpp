@@ -2,12 +2,15 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 #include "commands.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/sim/convex_decomposition.h"
+#include "cordgrasp/render/renderer.h"
+#include "hand_scene.h"
 #include "plan_json.h"
 #include "sim_json.h"
 
@@ -32,6 +35,7 @@ struct ValidateOptions {
   std::optional<double> effort_scale;
   std::optional<int> hacd_triangles;
   int grasps = -1;
+  std::string snapshots_dir;
   std::string out;
   bool quiet = false;
 };
@@ -87,12 +91,43 @@ void run_validate(const ValidateOptions& opt) {
   const SimTests tests = sim_tests_from_string(opt.tests);
 
   const bool progress = !opt.quiet;
+  // --snapshots: the world at the end of every phase (not of shake / gravity6 segments).
+  const auto object = std::make_shared<const Mesh>(mesh);
+  std::vector<SnapshotFrame> frames;
+  std::unique_ptr<Renderer> renderer;
+  if (!opt.snapshots_dir.empty()) {
+    if (!std::filesystem::is_directory(opt.snapshots_dir))
+      throw InputError("validate: --snapshots '" + opt.snapshots_dir + "' is not a directory");
+    renderer = std::make_unique<Renderer>();
+  }
+  const auto hooks = [&](int) -> PhaseHook {
+    if (!renderer) return {};
+    return [&](const PhaseSnapshot& s) {
+      if (s.phase.find(' ') != std::string::npos) return;  // a segment, e.g. "shake x"
+      frames.push_back({s.X_WL, s.X_WO, "", s.phase});
+    };
+  };
   SimDocument doc = validate_plan(
       plan, hand, mesh, params, tests, opt.grasps,
       [&](int done, int total, const SimResult& r) {
         std::cout << "grasp " << done - 1 << ": " << sim_result_line(r) << '\n' << std::flush;
+        if (renderer) {
+          for (SnapshotFrame& f : frames) {
+            const PhaseResult* p = r.phase(f.name);
+            f.caption = plan.object_name + " · " + hand.name + " · grasp " +
+                        std::to_string(done - 1) + " · after " + f.name +
+                        (p ? std::string(" · ") + to_string(p->outcome) : std::string());
+          }
+          RenderParams picture;
+          picture.width_px = 800;
+          picture.height_px = 600;
+          write_snapshots(*renderer, hand, object, frames, opt.snapshots_dir,
+                          "grasp_" + std::to_string(done - 1), picture);
+          frames.clear();
+        }
         if (progress) std::fprintf(stderr, "validate: %d/%d grasps\n", done, total);
-      });
+      },
+      hooks);
   doc.plan_path = canonical(opt.plan);
   doc.object_path = opt.object.empty() ? plan.object_path : canonical(opt.object);
   write_sim_file(opt.out, doc, hand);
@@ -146,6 +181,8 @@ void add_validate_command(CLI::App& app) {
                   "HACD: decompose a vertex-clustered copy of at most this many triangles "
                   "(0 = the mesh itself)");
   cmd->add_option("--grasps", opt->grasps, "Validate only the first K grasps of the plan");
+  cmd->add_option("--snapshots", opt->snapshots_dir,
+                  "Existing folder: one PNG per grasp and phase end, grasp_K_<phase>.png");
   cmd->add_option("--out", opt->out, "Output sim.json")->required();
   cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
   cmd->callback([opt]() { run_validate(*opt); });

@@ -1,8 +1,11 @@
 #include "plan_job.h"
 
 #include <filesystem>
+#include <iostream>
 
 #include "cordgrasp/core/explore_cords.h"
+#include "cordgrasp/core/mesh_io.h"
+#include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/palm_width.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/plan_generic_grasps.h"
@@ -83,6 +86,21 @@ void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
   cmd->add_flag_callback(
       "--no-local-improvement", [&p]() { p.cord_local_improvement = false; },
       "Cord: skip the local improvement of the sampled sets");
+}
+
+Mesh load_job_mesh(const PlanJobParams& p, const std::string& object_path) {
+  MeshLoadOptions load;
+  load.units = parse_length_units(p.units);
+  MeshLoadReport report;
+  Mesh mesh = load_mesh(object_path, load, &report);
+  if (report.auto_chose_mm)
+    std::cerr << "cordgrasp: note: '" << object_path
+              << "': --units auto read the file as millimetres\n";
+  const double diagonal_m = mesh_bounds(mesh).size().norm();
+  if (load.units == LengthUnits::kMeters && diagonal_m > load.auto_mm_diagonal)
+    std::cerr << "cordgrasp: warning: '" << object_path << "' is " << diagonal_m
+              << " m across: if the file is in millimetres, give --units mm (or auto)\n";
+  return mesh;
 }
 
 PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::string& object_path,

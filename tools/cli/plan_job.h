@@ -32,6 +32,11 @@ struct PlanJobParams {
 /// `cmd`, bound to `p`.
 void add_plan_job_options(CLI::App* cmd, PlanJobParams& p);
 
+/// Loads the object mesh in p.units. Says on stderr when --units auto read it as millimetres,
+/// and warns when a file read as meters is over 5 m across (a millimetre file given as m).
+/// @throws InputError as load_mesh.
+Mesh load_job_mesh(const PlanJobParams& p, const std::string& object_path);
+
 /// Plans grasps on `mesh` (loaded from `object_path`) with `hand`: the document plan.json
 /// holds. Deterministic for a given seed (timings aside).
 PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::string& object_path,

@@ -24,6 +24,9 @@ struct FingerParams {
                                         ///< surface; links this close are contacts
   int max_close_iterations = 2000;      ///< safety cap on closing iterations
   int min_contacts = 2;                 ///< fewer contacts → rejected (§7.4.5)
+  /// Static links (palm, finger bases) within contact_tolerance_m of the object at the end are
+  /// contacts too (Simox only records actor contacts); a palm the object rests on pushes it.
+  bool static_link_contacts = true;
 };
 
 /// How one finger-stage attempt ended.

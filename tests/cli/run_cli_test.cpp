@@ -1,0 +1,142 @@
+// `cordgrasp run`: the main job on the shipped defaults writes every file; no grasp is a
+// clear failure that still leaves the plan and the report; bad arguments fail before work.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "test_files.h"
+#include "test_paths.h"
+
+namespace cordgrasp {
+namespace {
+
+namespace fs = std::filesystem;
+using test::png_size;
+using test::quoted;
+using test::run_cordgrasp;
+using test::TempDir;
+
+constexpr int kGrasps = 2;
+constexpr unsigned kWidth_px = 160, kHeight_px = 120;
+
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);  // throws (test fails) when missing or not JSON
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(CliRun, DefaultsWritePlanSimReportAndPictures) {
+  TempDir dir;
+  const auto r = run_cordgrasp("run --grasps " + std::to_string(kGrasps) +
+                               " --size 160x120 --quiet --out-dir " + quoted(dir.path.string()));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json plan = read_json(dir.file("plan.json"));
+  const nlohmann::json sim = read_json(dir.file("sim.json"));
+  EXPECT_EQ(plan.at("inputs").at("hand").at("name"), "cordgrasp_sah");
+  EXPECT_EQ(plan.at("inputs").at("object").at("name"), "mug");
+  const size_t n = plan.at("grasps").size();
+  ASSERT_GE(n, 1u);
+  EXPECT_LE(n, static_cast<size_t>(kGrasps));
+  EXPECT_EQ(sim.at("grasps").size(), n);
+  EXPECT_EQ(sim.at("parameters").at("tests"), "lift,shake");
+  const std::string report = read_text(dir.file("report.md"));
+  for (size_t k = 0; k < n; ++k) {
+    const std::string planned = "grasp_" + std::to_string(k) + ".png";
+    const std::string physics = "grasp_" + std::to_string(k) + "_physics.png";
+    EXPECT_EQ(png_size(dir.file(planned)), std::make_pair(kWidth_px, kHeight_px)) << planned;
+    EXPECT_GT(png_size(dir.file(physics)).first, 0u) << physics;
+    EXPECT_NE(report.find("(" + planned + ")"), std::string::npos) << report;
+    EXPECT_NE(report.find(sim.at("grasps").at(k).at("outcome").get<std::string>()),
+              std::string::npos);
+  }
+  EXPECT_NE(report.find("| 0 |"), std::string::npos) << report;
+  // Nothing half-written is left behind: no temporary files.
+  for (const auto& e : fs::directory_iterator(dir.path))
+    EXPECT_TRUE(e.path().extension() == ".json" || e.path().extension() == ".png" ||
+                e.path().extension() == ".md")
+        << e.path();
+  EXPECT_TRUE(r.output.empty() || r.output.find("run [") == std::string::npos) << r.output;
+
+  // validate on the written plan reproduces run's physics exactly.
+  const auto v = run_cordgrasp("validate --plan " + quoted(dir.file("plan.json")) +
+                               " --tests lift,shake -q --out " + quoted(dir.file("again.json")));
+  ASSERT_EQ(v.exit_code, 0) << v.output;
+  const nlohmann::json again = read_json(dir.file("again.json"));
+  for (size_t k = 0; k < n; ++k) {
+    EXPECT_EQ(again["grasps"][k]["outcome"], sim["grasps"][k]["outcome"]) << k;
+    EXPECT_EQ(again["grasps"][k]["phases"].back()["translation_m"],
+              sim["grasps"][k]["phases"].back()["translation_m"])
+        << k;
+  }
+}
+
+TEST(CliRun, ProgressGoesToStderrUnlessQuiet) {
+  TempDir dir;
+  const auto r = run_cordgrasp("run --grasps 1 --tests none --no-render --out-dir " +
+                               quoted(dir.path.string()));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("run [0."), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("report"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir.file("sim.json")));
+  EXPECT_FALSE(fs::exists(dir.file("grasp_0.png")));
+  EXPECT_NE(read_text(dir.file("report.md")).find("Physics: skipped"), std::string::npos);
+}
+
+// Two point contacts are never force closure (issue 4): the parallel gripper without a
+// soft-finger patch cannot find a grasp, so run must fail — yet keep plan and report.
+TEST(CliRun, NoGraspExitsNonZeroWithAClearMessageAndStillWritesTheReport) {
+  TempDir dir;
+  const auto r = run_cordgrasp("run --hand parallel_gripper --object box --time-limit 1 --quiet "
+                               "--out-dir " + quoted(dir.path.string()));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("no force-closure grasp of box with parallel_gripper"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(read_json(dir.file("plan.json")).at("grasps").size(), 0u);
+  EXPECT_NE(read_text(dir.file("report.md")).find("No force-closure grasp"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir.file("sim.json")));
+}
+
+TEST(CliRun, UnknownObjectNameIsOneLineErrorListingTheShippedOnes) {
+  TempDir dir;
+  const auto r = run_cordgrasp("run --object teapot --out-dir " + quoted(dir.path.string()));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("--object 'teapot': no such file, nor a shipped object (box,"),
+            std::string::npos)
+      << r.output;
+  EXPECT_TRUE(fs::is_empty(dir.path));
+}
+
+TEST(CliRun, MillimetreFileReadAsMetersIsWarnedAboutAndAutoReadsItAsMillimetres) {
+  TempDir dir;
+  const std::string box = quoted(test::test_data("meshes/box_100mm.obj"));
+  const std::string rest = " --tests none --no-render --time-limit 1 --quiet --out-dir " +
+                           quoted(dir.path.string());
+  const auto as_m = run_cordgrasp("run --object " + box + rest);
+  EXPECT_NE(as_m.output.find("m across: if the file is in millimetres, give --units mm"),
+            std::string::npos)
+      << as_m.output;
+  const auto as_auto = run_cordgrasp("run --units auto --object " + box + rest);
+  EXPECT_NE(as_auto.output.find("--units auto read the file as millimetres"), std::string::npos)
+      << as_auto.output;
+  EXPECT_EQ(as_auto.output.find("m across"), std::string::npos) << as_auto.output;
+}
+
+TEST(CliRun, BadTestNameFailsBeforePlanning) {
+  TempDir dir;
+  const auto r =
+      run_cordgrasp("run --tests lift,wobble --out-dir " + quoted(dir.path.string()));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("wobble"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::is_empty(dir.path));
+}
+
+}  // namespace
+}  // namespace cordgrasp
