@@ -392,13 +392,11 @@ struct BenchInputs::Loaded {
 
 BenchInputs::BenchInputs(const BenchParams& params, const std::vector<BenchAttempt>& attempts) {
   auto loaded = std::make_shared<Loaded>();
-  MeshLoadOptions load;
-  load.units = parse_length_units(params.job.units);
   for (const BenchAttempt& a : attempts) {
     if (!loaded->meshes.count(a.object_path) && !loaded->errors.count("object:" + a.object_path)) {
       try {
         loaded->meshes[a.object_path] =
-            std::make_shared<const Mesh>(load_mesh(a.object_path, load));
+            std::make_shared<const Mesh>(load_job_mesh(params.job, a.object_path));
       } catch (const std::exception& e) {
         loaded->errors["object:" + a.object_path] = e.what();
       }

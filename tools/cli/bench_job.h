@@ -108,8 +108,8 @@ std::vector<BenchRow> parse_bench_csv(const std::string& text, const std::string
 /// as its message and makes the attempts using it error rows).
 class BenchInputs {
  public:
-  /// Loads every object (units from params.job.units) and hand of `params` that `attempts`
-  /// use.
+  /// Loads every object (load_job_mesh: units from params.job.units) and hand of `params`
+  /// that `attempts` use.
   BenchInputs(const BenchParams& params, const std::vector<BenchAttempt>& attempts);
   /// The mesh, or nullptr with *error set.
   std::shared_ptr<const Mesh> mesh(const std::string& path, std::string* error) const;
