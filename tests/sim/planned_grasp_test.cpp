@@ -58,8 +58,9 @@ TEST(ValidatePlannedGrasp, ForceClosureSahGraspOnTheCylinderHoldsThroughLiftAndS
   const Grasp grasp = first_planned_grasp(mesh, default_hand());
   ASSERT_GT(grasp.q.size(), 0) << "no force-closure grasp planned";
   ASSERT_TRUE(grasp.force_closure);
+  const SimTests lift_shake{true, true, false};
   const SimResult r =
-      validate_grasp(mesh, default_hand(), grasp, planner_contact_params(), SimTests{true, true, false});
+      validate_grasp(mesh, default_hand(), grasp, planner_contact_params(), lift_shake);
   EXPECT_EQ(r.outcome, Outcome::kHeld) << to_string(r.outcome);
   for (const char* name : {"close", "lift", "shake"}) {
     const PhaseResult* p = r.phase(name);
