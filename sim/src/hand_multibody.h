@@ -30,9 +30,8 @@ struct HandBodyParams {
   /// is commanded each step) and contacts barely deflect it.
   double base_mass_scale = 1000.0;
   double link_friction = 1.0;        ///< Bullet friction of the links (× the object's)
-  /// Polyhedral link shapes (boxes, hulls) get face data so Bullet clips faces against faces
-  /// and finds whole contact patches in one step (GJK alone adds one point per step).
-  bool polyhedral_contacts = true;
+  /// Polyhedral link shapes (boxes, hulls) get Bullet's polyhedral features (SimParams).
+  bool polyhedral_contacts = false;
   bool pool_mimic_efforts = true;    ///< mimic joints' effort limits add to their master's
   /// Reflected actuator inertia added to every moving joint's body: about the axis of a
   /// revolute joint [kg·m²] ...

@@ -23,6 +23,18 @@ constexpr double kHeavyBox_kg = 5.0;           ///< weight 49 N
 constexpr double kWeakMotors = 0.45;           ///< 36 N of friction < 49 N: slips
 constexpr double kStrongMotors = 0.8;          ///< 64 N of friction > 49 N: holds
 constexpr double kInertiaRelTol = 1e-9;
+/// The gripper's flat pads touch a face over a patch: soft-finger contacts of this radius, as
+/// the planner models two-finger grippers (tools/hold_rates.sh). With point contacts nothing
+/// but numerical noise keeps the pinched box from spinning about the line through the pads
+/// (docs/physics.md).
+constexpr double kPadPatchRadius_m = 0.005;
+
+/// Default simulation parameters with the pads' soft-finger contacts.
+SimParams gripper_params() {
+  SimParams params;
+  params.contact.soft_finger_radius_m = kPadPatchRadius_m;
+  return params;
+}
 
 const HandModel& gripper() {
   static const HandModel hand = load_hand("parallel_gripper");
@@ -41,7 +53,7 @@ Grasp centre_pinch(double short_m = 0.0) {
 }
 
 TEST(ValidateGrasp, ParallelGripperPinchingABoxAtItsCentreHoldsThroughEveryTest) {
-  const SimResult r = validate_grasp(box(), gripper(), centre_pinch(), SimParams{});
+  const SimResult r = validate_grasp(box(), gripper(), centre_pinch(), gripper_params());
   EXPECT_EQ(r.outcome, Outcome::kHeld);
   for (const char* name : {"settle", "close", "lift", "shake", "gravity6"}) {
     const PhaseResult* p = r.phase(name);
@@ -61,14 +73,15 @@ TEST(ValidateGrasp, ParallelGripperPinchingABoxAtItsCentreHoldsThroughEveryTest)
 }
 
 TEST(ValidateGrasp, PinchWithoutFrictionDrops) {
-  SimParams params;
+  SimParams params = gripper_params();
   params.contact.mu = 0.0;
   const SimResult r = validate_grasp(box(), gripper(), centre_pinch(), params);
   EXPECT_EQ(r.outcome, Outcome::kDropped);
 }
 
 TEST(ValidateGrasp, FingersOneCentimetreShortOfTheFacesDrop) {
-  const SimResult r = validate_grasp(box(), gripper(), centre_pinch(kShortOfFaces_m), SimParams{});
+  const SimResult r =
+      validate_grasp(box(), gripper(), centre_pinch(kShortOfFaces_m), gripper_params());
   EXPECT_EQ(r.outcome, Outcome::kDropped);
   const PhaseResult* close = r.phase("close");
   ASSERT_NE(close, nullptr);
@@ -76,7 +89,7 @@ TEST(ValidateGrasp, FingersOneCentimetreShortOfTheFacesDrop) {
 }
 
 TEST(ValidateGrasp, HeavyBoxSlipsWhenFrictionFromTheGripIsBelowItsWeightOnly) {
-  SimParams params;
+  SimParams params = gripper_params();
   params.mass_kg = kHeavyBox_kg;
   const SimTests lift_only{true, false, false};
   params.effort_scale = kWeakMotors;
@@ -93,8 +106,8 @@ TEST(ValidateGrasp, HeavyBoxSlipsWhenFrictionFromTheGripIsBelowItsWeightOnly) {
 
 TEST(ValidateGrasp, SamePlanAndParametersGiveIdenticalResults) {
   const SimTests tests{true, true, false};
-  const SimResult a = validate_grasp(box(), gripper(), centre_pinch(), SimParams{}, tests);
-  const SimResult b = validate_grasp(box(), gripper(), centre_pinch(), SimParams{}, tests);
+  const SimResult a = validate_grasp(box(), gripper(), centre_pinch(), gripper_params(), tests);
+  const SimResult b = validate_grasp(box(), gripper(), centre_pinch(), gripper_params(), tests);
   ASSERT_EQ(a.phases.size(), b.phases.size());
   EXPECT_EQ(a.outcome, b.outcome);
   for (size_t k = 0; k < a.phases.size(); ++k) {
@@ -113,7 +126,7 @@ TEST(ValidateGrasp, SamePlanAndParametersGiveIdenticalResults) {
 TEST(ValidateGrasp, HookSeesEveryPhaseEndWithAllLinkPoses) {
   std::vector<std::string> phases;
   const SimTests tests{true, false, false};
-  validate_grasp(box(), gripper(), centre_pinch(), SimParams{}, tests,
+  validate_grasp(box(), gripper(), centre_pinch(), gripper_params(), tests,
                  [&](const PhaseSnapshot& s) {
                    phases.push_back(s.phase);
                    EXPECT_EQ(s.X_WL.size(), gripper().links.size());
@@ -126,10 +139,11 @@ TEST(ValidateGrasp, WorldFrameTurnsTheApproachDownAndTheHandRisesDuringLift) {
   const Grasp grasp = centre_pinch();
   Eigen::Isometry3d X_WB_close, X_WB_lift;
   const SimTests tests{true, false, false};
-  const SimResult r = validate_grasp(box(), gripper(), grasp, SimParams{}, tests,
+  const size_t root = static_cast<size_t>(gripper().root_link);
+  const SimResult r = validate_grasp(box(), gripper(), grasp, gripper_params(), tests,
                                      [&](const PhaseSnapshot& s) {
-                                       if (s.phase == "close") X_WB_close = s.X_WL[static_cast<size_t>(gripper().root_link)];
-                                       if (s.phase == "lift") X_WB_lift = s.X_WL[static_cast<size_t>(gripper().root_link)];
+                                       if (s.phase == "close") X_WB_close = s.X_WL[root];
+                                       if (s.phase == "lift") X_WB_lift = s.X_WL[root];
                                      });
   // Approach (+z of the GCP) along −z of the world.
   const Eigen::Vector3d z_G = (r.X_WO * grasp.X_OG).linear().col(2);

@@ -38,13 +38,17 @@ void validate_benchmark(benchmark::State& state, const HandModel& hand, const Me
   const SimTests close_lift_shake{true, true, false};
   validate_grasp(mesh, hand, grasp, params, close_lift_shake);  // warms the HACD cache
   int steps = 0;
+  SimResult r;
   for (auto _ : state) {
-    const SimResult r = validate_grasp(mesh, hand, grasp, params, close_lift_shake);
+    r = validate_grasp(mesh, hand, grasp, params, close_lift_shake);
     steps = 0;
     for (const PhaseResult& p : r.phases) steps += p.steps;
     benchmark::DoNotOptimize(r.outcome);
   }
   state.counters["steps"] = steps;
+  state.counters["held"] = r.held() ? 1 : 0;
+  if (const PhaseResult* shake = r.phase("shake"))
+    state.counters["shake_mm"] = 1e3 * shake->translation_m;
   state.counters["triangles"] = static_cast<double>(mesh.triangles.size());
 }
 
@@ -55,6 +59,23 @@ void BM_ValidateSahMug(benchmark::State& state) {
   validate_benchmark(state, hand, mesh, SimParams{});
 }
 BENCHMARK(BM_ValidateSahMug)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+/// Time step and solver iterations against speed (docs/physics.md): the default hand on the
+/// shipped mug at 1/arg0 s with arg1 iterations (filter: SimStep).
+void BM_SimStepSahMug(benchmark::State& state) {
+  static const HandModel hand = load_hand("cordgrasp_sah");
+  static const Mesh mesh = make_object_mesh("mug");
+  SimParams params;
+  params.time_step_s = 1.0 / static_cast<double>(state.range(0));
+  params.solver_iterations = static_cast<int>(state.range(1));
+  validate_benchmark(state, hand, mesh, params);
+}
+BENCHMARK(BM_SimStepSahMug)
+    ->Args({240, 20})
+    ->Args({480, 20})
+    ->Args({960, 20})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(2);
 
 /// The default hand on the shipped bottle (2880 triangles).
 void BM_ValidateSahBottle(benchmark::State& state) {
