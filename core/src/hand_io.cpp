@@ -472,7 +472,8 @@ class Description {
     if (!root_.IsMap()) fail(path_, "hand description must be a YAML mapping (key: value)");
     static const std::set<std::string> kKeys = {"format",    "name",        "urdf",
                                                 "gcp",       "preshape",    "actors",
-                                                "couplings", "thumb_links", "palm_width_m"};
+                                                "couplings", "thumb_links", "palm_width_m",
+                                                "soft_finger_radius_m"};
     for (const auto& kv : root_) {
       const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
       if (!kKeys.count(key)) error(kv.first, "unknown key " + in_quotes(key));
@@ -735,6 +736,11 @@ HandModel load_hand(const std::string& name_or_path) {
     const double v = d.number(w, "palm_width_m");
     if (!(v > 0.0 && v < 1.0)) d.error(w, "palm_width_m must be in (0, 1) m");
     hand.palm_width_m = v;
+  }
+  if (const YAML::Node r = d.root()["soft_finger_radius_m"]) {
+    const double v = d.number(r, "soft_finger_radius_m");
+    if (!(v >= 0.0 && v < 0.05)) d.error(r, "soft_finger_radius_m must be in [0, 0.05) m");
+    hand.soft_finger_radius_m = v;
   }
   check_size(hand);
   if (!substituted.empty()) warn_substituted_once(hand.urdf_path, substituted);

@@ -89,12 +89,12 @@ TEST(CliRun, ProgressGoesToStderrUnlessQuiet) {
   EXPECT_NE(read_text(dir.file("report.md")).find("Physics: skipped"), std::string::npos);
 }
 
-// Two point contacts are never force closure (issue 4): the parallel gripper without a
-// soft-finger patch cannot find a grasp, so run must fail — yet keep plan and report.
+// Two point contacts are never force closure (issue 4): the parallel gripper forced to point
+// contacts cannot find a grasp, so run must fail — yet keep plan and report.
 TEST(CliRun, NoGraspExitsNonZeroWithAClearMessageAndStillWritesTheReport) {
   TempDir dir;
-  const auto r = run_cordgrasp("run --hand parallel_gripper --object box --time-limit 1 --quiet "
-                               "--out-dir " + quoted(dir.path.string()));
+  const auto r = run_cordgrasp("run --hand parallel_gripper --soft-finger-radius 0 --object box "
+                               "--time-limit 1 --quiet --out-dir " + quoted(dir.path.string()));
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("no force-closure grasp of box with parallel_gripper"),
             std::string::npos)
@@ -102,6 +102,20 @@ TEST(CliRun, NoGraspExitsNonZeroWithAClearMessageAndStillWritesTheReport) {
   EXPECT_EQ(read_json(dir.file("plan.json")).at("grasps").size(), 0u);
   EXPECT_NE(read_text(dir.file("report.md")).find("No force-closure grasp"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir.file("sim.json")));
+}
+
+// The gripper's description carries a 5 mm pad patch, used by planner and physics alike.
+TEST(CliRun, GripperUsesItsHandsSoftFingerRadiusInPlanAndPhysics) {
+  TempDir dir;
+  const auto r = run_cordgrasp(
+      "run --hand parallel_gripper --object box --planner generic --grasps 1 --no-render "
+      "--tests lift --time-limit 5 --quiet --out-dir " + quoted(dir.path.string()));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json plan = read_json(dir.file("plan.json"));
+  const nlohmann::json sim = read_json(dir.file("sim.json"));
+  EXPECT_EQ(plan["parameters"]["soft_finger_radius_m"], 0.005);
+  EXPECT_EQ(sim["parameters"]["soft_finger_radius_m"], 0.005);
+  EXPECT_EQ(plan["grasps"].size(), 1u);
 }
 
 TEST(CliRun, UnknownObjectNameIsOneLineErrorListingTheShippedOnes) {

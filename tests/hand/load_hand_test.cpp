@@ -190,10 +190,12 @@ TEST(LoadHand, WarnsOncePerHandNamingTheSubstitutedLinks) {
   EXPECT_EQ(err.find("warning"), err.rfind("warning")) << "warned more than once:\n" << err;
 }
 
-TEST(LoadHand, PalmWidthOverrideAndThumbLinksAreRead) {
+TEST(LoadHand, PalmWidthOverrideSoftFingerRadiusAndThumbLinksAreRead) {
   const HandModel h = load_hand(test_data("hands/features/features.yaml"));
   ASSERT_TRUE(h.palm_width_m.has_value());
   EXPECT_DOUBLE_EQ(*h.palm_width_m, 0.07);
+  EXPECT_DOUBLE_EQ(h.soft_finger_radius_m, 0.004);
+  EXPECT_DOUBLE_EQ(load_hand("cordgrasp_sah").soft_finger_radius_m, 0.0);  // point contacts
   ASSERT_EQ(h.thumb_links.size(), 1u);
   EXPECT_EQ(h.thumb_links[0], find_link(h, "slider"));
   EXPECT_TRUE(
@@ -238,7 +240,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadHandCase{"yaml_syntax_error.yaml", "YAML syntax error at line"},
         BadHandCase{"millimetres.yaml", "looks like it is in millimetres"},
         BadHandCase{"malformed_urdf.yaml", "URDF parse error"},
-        BadHandCase{"unknown_key.yaml", "unknown key 'actor'"}),
+        BadHandCase{"unknown_key.yaml", "unknown key 'actor'"},
+        BadHandCase{"soft_finger_radius_mm.yaml", "soft_finger_radius_m must be in [0, 0.05) m"}),
     [](const testing::TestParamInfo<BadHandCase>& info) {
       std::string n = fs::path(info.param.file).stem().string();
       return n;

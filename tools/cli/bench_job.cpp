@@ -471,8 +471,7 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
     result.first_grasp = g;
     if (params.tests == "none") return result;
     SimParams sim;
-    sim.contact.mu = job.mu;  // one μ for the planner and the physics
-    sim.contact.soft_finger_radius_m = job.soft_finger_radius_m;
+    sim.contact = plan_contact_model(plan);  // one friction model for planner and physics
     sim.decomposition_cache_dir = params.sim_cache_dir;
     const SimDocument doc =
         validate_plan(plan, *hand, *mesh, sim, sim_tests_from_string(params.tests), 1);
@@ -533,7 +532,8 @@ nlohmann::json bench_params_to_json(const BenchParams& p) {
           {"grasps", j.grasps},
           {"time_limit_s", j.time_limit_s},
           {"mu", j.mu},
-          {"soft_finger_radius_m", j.soft_finger_radius_m},
+          {"soft_finger_radius_m", j.soft_finger_radius_m ? nlohmann::json(*j.soft_finger_radius_m)
+                                                          : nlohmann::json("hand default")},
           {"side_cords", j.side_cords},
           {"quality", j.quality},
           {"units", j.units},

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "cordgrasp/core/assets.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "plan_job.h"
@@ -61,9 +62,10 @@ void print_summary(const PlanDocument& doc, const HandModel& hand, const std::st
 }
 
 void run_plan(const PlanOptions& opt) {
-  const Mesh mesh = load_job_mesh(opt.job, opt.object);
+  const std::string object_path = resolve_object_path(opt.object);
+  const Mesh mesh = load_job_mesh(opt.job, object_path);
   const HandModel hand = load_hand(opt.hand);
-  const PlanDocument doc = plan_job(opt.job, mesh, opt.object, hand);
+  const PlanDocument doc = plan_job(opt.job, mesh, object_path, hand);
   write_plan_file(opt.out, doc, hand);
   print_summary(doc, hand, opt.out);
 }
@@ -79,7 +81,7 @@ void add_plan_command(CLI::App& app) {
       "plan", "Plan force-closure grasps with the cord planner (or the generic baseline)");
   cmd->add_option("--hand", opt->hand, "Hand description file or shipped hand name")
       ->capture_default_str();
-  cmd->add_option("--object,-o", opt->object, "Object mesh file")->required();
+  cmd->add_option("--object,-o", opt->object, "Object mesh file or shipped object name")->required();
   add_plan_job_options(cmd, opt->job);
   cmd->add_option("--out", opt->out, "Output plan.json")->required();
   cmd->callback([opt]() { run_plan(*opt); });

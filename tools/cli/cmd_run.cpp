@@ -120,8 +120,7 @@ void run(const RunOptions& opt) {
   std::vector<std::vector<SnapshotFrame>> frames(static_cast<size_t>(n));
   if (physics) {
     SimParams params;
-    params.contact.mu = opt.job.mu;  // one friction coefficient for planner and physics
-    params.contact.soft_finger_radius_m = opt.job.soft_finger_radius_m;
+    params.contact = plan_contact_model(written);  // one friction model for planner and physics
     t = Clock::now();
     const auto hooks = [&](int k) -> PhaseHook {
       if (opt.no_render) return {};

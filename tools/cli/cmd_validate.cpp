@@ -11,6 +11,7 @@
 #include "cordgrasp/sim/convex_decomposition.h"
 #include "cordgrasp/render/renderer.h"
 #include "hand_scene.h"
+#include "plan_job.h"
 #include "plan_json.h"
 #include "sim_json.h"
 
@@ -75,8 +76,7 @@ void run_validate(const ValidateOptions& opt) {
 
   SimParams params;
   // μ: one value shared with the planner: the plan's unless --mu overrides it.
-  params.contact.mu = plan.parameters.value("mu", kDefaultFrictionCoefficient);
-  params.contact.soft_finger_radius_m = plan.parameters.value("soft_finger_radius_m", 0.0);
+  params.contact = plan_contact_model(plan);
   if (opt.mu) params.contact.mu = *opt.mu;
   if (opt.mass_kg) params.mass_kg = *opt.mass_kg;
   if (opt.density_kgm3) params.density_kgm3 = *opt.density_kgm3;

@@ -65,9 +65,9 @@ void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--soft-finger-radius", p.soft_finger_radius_m,
-                  "Contact patch radius for torsional friction [m]; 0 = point contacts")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
+                  "Contact patch radius for torsional friction [m]; 0 = point contacts "
+                  "(default: the hand's soft_finger_radius_m, 5 mm for the grippers)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--side-cords", p.side_cords,
                   "Cord: a scanned cord that fails: empty (missed object scores as empty), "
                   "discard (spec 4.5) or shrink (spec 11.6)")
@@ -103,6 +103,13 @@ Mesh load_job_mesh(const PlanJobParams& p, const std::string& object_path) {
   return mesh;
 }
 
+ContactModel plan_contact_model(const PlanDocument& plan) {
+  ContactModel c;
+  c.mu = plan.parameters.value("mu", kDefaultFrictionCoefficient);
+  c.soft_finger_radius_m = plan.parameters.value("soft_finger_radius_m", 0.0);
+  return c;
+}
+
 PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::string& object_path,
                       const HandModel& hand) {
   auto collider = make_bullet_hand_collider(hand, mesh);
@@ -112,7 +119,8 @@ PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::strin
   params.time_limit_s = p.time_limit_s;
   params.seed = p.seed;
   params.quality.contact.mu = p.mu;
-  params.quality.contact.soft_finger_radius_m = p.soft_finger_radius_m;
+  const double soft_finger_radius_m = p.soft_finger_radius_m.value_or(hand.soft_finger_radius_m);
+  params.quality.contact.soft_finger_radius_m = soft_finger_radius_m;
   params.quality.mode = quality_mode_from_string(p.quality);
   params.quality.seed = p.seed;
 
@@ -131,7 +139,7 @@ PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::strin
                     {"time_limit_s", p.time_limit_s},
                     {"seed", p.seed},
                     {"mu", p.mu},
-                    {"soft_finger_radius_m", p.soft_finger_radius_m},
+                    {"soft_finger_radius_m", soft_finger_radius_m},
                     {"quality", p.quality},
                     {"cone_edges", params.quality.contact.cone_edges},
                     {"min_epsilon", params.quality.min_epsilon},

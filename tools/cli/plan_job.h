@@ -3,6 +3,7 @@
 // `cordgrasp plan`, `run` and `bench` so the three agree on every option and default.
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "cordgrasp/core/contact_model.h"
@@ -19,7 +20,8 @@ struct PlanJobParams {
   double time_limit_s = 10.0;    ///< wall-clock limit of the plan [s]
   std::uint64_t seed = 1;        ///< seed of every random choice
   double mu = kDefaultFrictionCoefficient;  ///< friction coefficient (planner and physics)
-  double soft_finger_radius_m = 0.0;        ///< contact patch radius; 0 = point contacts
+  /// Contact patch radius [m]; 0 = point contacts; unset: the hand's soft_finger_radius_m.
+  std::optional<double> soft_finger_radius_m;
   std::string side_cords = "empty";         ///< empty, discard or shrink (SideCordPolicy)
   std::string quality = "textbook";         ///< textbook or simox (spec §8)
   std::string units = "m";                  ///< object file units: m, mm or auto
@@ -36,6 +38,10 @@ void add_plan_job_options(CLI::App* cmd, PlanJobParams& p);
 /// and warns when a file read as meters is over 5 m across (a millimetre file given as m).
 /// @throws InputError as load_mesh.
 Mesh load_job_mesh(const PlanJobParams& p, const std::string& object_path);
+
+/// The friction model a plan was made with (μ, soft-finger radius from its parameters): the
+/// physics of validate, run and bench uses it too (one source of truth).
+ContactModel plan_contact_model(const PlanDocument& plan);
 
 /// Plans grasps on `mesh` (loaded from `object_path`) with `hand`: the document plan.json
 /// holds. Deterministic for a given seed (timings aside).

@@ -94,6 +94,10 @@ struct HandModel {
   std::vector<Actor> actors;     ///< closing fingers
   std::vector<int> thumb_links;  ///< links of the thumb (roll calibration, spec §7.1)
   std::optional<double> palm_width_m;  ///< W_palm override (spec §4.6); measured when absent
+  /// Default contact patch radius of this hand's pads [m] (ContactModel::soft_finger_radius_m;
+  /// planner and physics, unless --soft-finger-radius is given). 0: point contacts. Two-finger
+  /// grippers need > 0: two point contacts are never force closure.
+  double soft_finger_radius_m = 0.0;
 };
 
 /// Index of the link called `name`, or -1.
