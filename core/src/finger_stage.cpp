@@ -1,6 +1,7 @@
 #include "cordgrasp/core/finger_stage.h"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -404,6 +405,45 @@ void close_fingers(const HandModel& hand, const HandSetup& setup, HandObjectColl
                                                 : FingerStatus::kOk;
 }
 
+namespace {
+
+/// FingerParams::centre_single_actor: one pad touches, the opposite one is short of the object;
+/// the hand moves half the difference of their gaps along the opposite pad's way to the object
+/// and closes again from preshape.
+/// Keeps `r` unless the new closing has more contacts at a collision-free shifted pose.
+template <typename Collides>
+void centre_single_actor(const HandModel& hand, const HandSetup& setup,
+                         HandObjectCollider& collider, const FingerParams& params,
+                         const Collides& hand_collides, FingerResult& r) {
+  const Contact& touching = r.contacts.front();
+  collider.set_link_poses(link_poses(hand, r.q, r.X_OB));
+  std::optional<LinkObjectProximity> opposite;
+  for (int l : setup.actor_links.front()) {
+    if (l == touching.link) continue;
+    const auto prox = collider.link_object_proximity(l, params.centre_max_gap_m);
+    if (!prox || prox->distance_m <= params.contact_tolerance_m) continue;
+    const Eigen::Vector3d way = prox->p_object_O - prox->p_link_O;  // link → object
+    if (way.normalized().dot(touching.n_O) < 0.5) continue;  // not across the object
+    if (!opposite || prox->distance_m < opposite->distance_m) opposite = prox;
+  }
+  const auto touching_gap = collider.link_object_proximity(touching.link, params.centre_max_gap_m);
+  if (!opposite || !touching_gap) return;
+  // Both pads end equally far from the object: the touching one stopped up to the contact
+  // tolerance short of it, so split the difference of the two gaps.
+  const Eigen::Vector3d shift = 0.5 * (opposite->distance_m - touching_gap->distance_m) *
+                                (opposite->p_object_O - opposite->p_link_O).normalized();
+  Eigen::Isometry3d X_OG = r.X_OG;
+  X_OG.translation() += shift;
+  if (hand_collides(X_OG)) return;
+  FingerResult centred = r;
+  centred.X_OG = X_OG;
+  centred.X_OB = X_OG * setup.X_GB;
+  close_fingers(hand, setup, collider, centred.X_OB, setup.q_preshape, params, centred);
+  if (centred.contacts.size() > r.contacts.size()) r = std::move(centred);
+}
+
+}  // namespace
+
 FingerResult run_finger_stage(const HandModel& hand, const HandSetup& setup,
                               HandObjectCollider& collider, const Eigen::Isometry3d& X_OG_start,
                               double approach_travel_m, const FingerParams& params) {
@@ -481,6 +521,9 @@ FingerResult run_finger_stage(const HandModel& hand, const HandSetup& setup,
   r.X_OG = X_OG;
   r.X_OB = X_OG * setup.X_GB;
   close_fingers(hand, setup, collider, r.X_OB, setup.q_preshape, params, r);
+  if (params.centre_single_actor && setup.actor_links.size() == 1 &&
+      r.status == FingerStatus::kOneContact && r.contacts.size() == 1)
+    centre_single_actor(hand, setup, collider, params, hand_collides, r);
   return r;
 }
 

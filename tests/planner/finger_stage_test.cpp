@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "cordgrasp/core/grasp_quality.h"
+#include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/shapes.h"
@@ -131,6 +132,27 @@ TEST(FingerStage, ReportsOneContactWhenOnlyOneFingerReaches) {
   const FingerResult r = s.run(at(Eigen::Vector3d::Zero()));
   EXPECT_EQ(r.status, FingerStatus::kOneContact);
   EXPECT_EQ(r.contacts.size(), 1u);
+}
+
+// The shipped gripper has one actor (right pad mimics the left): off-centre, the first pad to
+// touch stops both. Centring shifts the hand by half the other pad's gap and closes again.
+TEST(FingerStage, OneActorGripperOffCentreIsCentredOnTheObject) {
+  constexpr double kOffset_m = 0.01, kHalf_m = 0.015;
+  Mesh box = make_box_mesh(Eigen::Vector3d::Constant(2 * kHalf_m));
+  for (auto& v : box.vertices) v.x() += kOffset_m;  // faces at x = −0.005 and x = 0.025
+  Scene s(load_hand("parallel_gripper"), box);
+  ASSERT_EQ(s.setup.actor_links.size(), 1u);
+  FingerParams no_centring;
+  no_centring.centre_single_actor = false;
+  EXPECT_EQ(s.run(at(Eigen::Vector3d::Zero()), 0.0, no_centring).status,
+            FingerStatus::kOneContact);
+  const FingerResult r = s.run(at(Eigen::Vector3d::Zero()));
+  ASSERT_EQ(r.status, FingerStatus::kOk) << to_string(r.status);
+  ASSERT_EQ(r.contacts.size(), 2u);
+  EXPECT_NEAR(r.X_OG.translation().x(), kOffset_m, kContactTol_m);
+  EXPECT_NEAR(r.X_OG.translation().y(), 0.0, kPosTol_m);
+  EXPECT_NEAR(r.X_OG.translation().z(), 0.0, kPosTol_m);
+  for (const Contact& c : r.contacts) EXPECT_NEAR(std::abs(c.p_O.x() - kOffset_m), kHalf_m, 1e-4);
 }
 
 TEST(FingerStage, ReportsCannotRetreatWhenTheHandStartsInside) {

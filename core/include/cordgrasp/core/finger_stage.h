@@ -27,6 +27,13 @@ struct FingerParams {
   /// Static links (palm, finger bases) within contact_tolerance_m of the object at the end are
   /// contacts too (Simox only records actor contacts); a palm the object rests on pushes it.
   bool static_link_contacts = true;
+  /// Hands with one actor (parallel grippers): when closing ends with one finger on the object
+  /// and the other short of it, shift the hand by half the gap along that finger's way to the
+  /// object and close again — the object centres the gripper, as a compliant wrist (and our
+  /// physics, where the first pad pushes the free object) does. Simox has no such step.
+  bool centre_single_actor = true;
+  /// Largest gap that centring closes [m] (a finger farther from the object is not opposite).
+  double centre_max_gap_m = 0.05;
 };
 
 /// How one finger-stage attempt ended.
