@@ -90,35 +90,11 @@ std::u32string decode_utf8(const std::string& s) {
 
 constexpr FT_Int32 kLoadFlags = FT_LOAD_TARGET_LIGHT;
 
-// Advance-based layout width in 26.6 units; caller holds the font mutex.
-long layout_width_26_6(FT_Face face, const std::u32string& text) {
-  long pen = 0;
-  FT_UInt previous = 0;
-  for (char32_t cp : text) {
-    const FT_UInt glyph = FT_Get_Char_Index(face, cp);
-    if (previous && glyph && FT_HAS_KERNING(face)) {
-      FT_Vector kern;
-      if (FT_Get_Kerning(face, previous, glyph, FT_KERNING_DEFAULT, &kern) == 0) pen += kern.x;
-    }
-    if (FT_Load_Glyph(face, glyph, kLoadFlags) == 0) pen += face->glyph->advance.x;
-    previous = glyph;
-  }
-  return pen;
-}
-
-int measure_locked(FT_Face face, const std::u32string& text, int size_px) {
-  FT_Set_Pixel_Sizes(face, 0, static_cast<FT_UInt>(size_px));
-  return static_cast<int>((layout_width_26_6(face, text) + 63) / 64);
-}
-
-void draw_locked(FT_Face face, Image& image, const std::u32string& text, int x, int baseline_y,
-                 int size_px, const Rgba& rgba) {
-  FT_Set_Pixel_Sizes(face, 0, static_cast<FT_UInt>(size_px));
-  const double color[3] = {255.0 * std::clamp(rgba[0], 0.0, 1.0),
-                           255.0 * std::clamp(rgba[1], 0.0, 1.0),
-                           255.0 * std::clamp(rgba[2], 0.0, 1.0)};
-  const double alpha = std::clamp(rgba[3], 0.0, 1.0);
-  long pen = static_cast<long>(x) * 64;
+// Walks `text` glyph by glyph from pen position `pen` (26.6 units) with kerning: calls
+// on_glyph(pen) with each loaded glyph in face->glyph, then advances. Returns the end pen.
+// The caller holds the font mutex.
+template <class OnGlyph>
+long walk_glyphs(FT_Face face, const std::u32string& text, long pen, const OnGlyph& on_glyph) {
   FT_UInt previous = 0;
   for (char32_t cp : text) {
     const FT_UInt glyph = FT_Get_Char_Index(face, cp);
@@ -128,7 +104,26 @@ void draw_locked(FT_Face face, Image& image, const std::u32string& text, int x, 
     }
     previous = glyph;
     if (FT_Load_Glyph(face, glyph, kLoadFlags) != 0) continue;
-    if (FT_Render_Glyph(face->glyph, FT_RENDER_MODE_NORMAL) != 0) continue;
+    on_glyph(pen);
+    pen += face->glyph->advance.x;
+  }
+  return pen;
+}
+
+int measure_locked(FT_Face face, const std::u32string& text, int size_px) {
+  FT_Set_Pixel_Sizes(face, 0, static_cast<FT_UInt>(size_px));
+  return static_cast<int>((walk_glyphs(face, text, 0, [](long) {}) + 63) / 64);
+}
+
+void draw_locked(FT_Face face, Image& image, const std::u32string& text, int x, int baseline_y,
+                 int size_px, const Rgba& rgba) {
+  FT_Set_Pixel_Sizes(face, 0, static_cast<FT_UInt>(size_px));
+  const double color[3] = {255.0 * std::clamp(rgba[0], 0.0, 1.0),
+                           255.0 * std::clamp(rgba[1], 0.0, 1.0),
+                           255.0 * std::clamp(rgba[2], 0.0, 1.0)};
+  const double alpha = std::clamp(rgba[3], 0.0, 1.0);
+  walk_glyphs(face, text, static_cast<long>(x) * 64, [&](long pen) {
+    if (FT_Render_Glyph(face->glyph, FT_RENDER_MODE_NORMAL) != 0) return;
     const FT_GlyphSlot slot = face->glyph;
     const FT_Bitmap& bm = slot->bitmap;
     const int x0 = static_cast<int>((pen + 32) / 64) + slot->bitmap_left;
@@ -147,8 +142,7 @@ void draw_locked(FT_Face face, Image& image, const std::u32string& text, int x, 
         px[3] = static_cast<std::uint8_t>(std::lround(px[3] + (255 - px[3]) * cov));
       }
     }
-    pen += slot->advance.x;
-  }
+  });
 }
 
 }  // namespace

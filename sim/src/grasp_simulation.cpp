@@ -132,10 +132,16 @@ struct GraspSimulation::Impl {
   void step(const Eigen::Isometry3d& X_WB_next);
   void contacts(int& count, double& max_penetration) const;
   bool unstable() const;
-  void begin(PhaseResult& r, const std::string& name);
+  /// Starts phase `name` (its wall clock too) with gravity `g_W` [m/s²].
+  void begin(PhaseResult& r, const std::string& name, const Eigen::Vector3d& g_W);
+  /// Sets the world's gravity [m/s²].
+  void set_gravity(const Eigen::Vector3d& g_W);
   /// Fills the pose change and contacts relative to `X_BO_reference`, classifies.
-  void finish(PhaseResult& r, const Eigen::Isometry3d& X_BO_reference,
-              std::chrono::steady_clock::time_point start);
+  void finish(PhaseResult& r, const Eigen::Isometry3d& X_BO_reference);
+  /// End of a shake or gravity6 segment of phase `r` (`ran`: run() did not stop it): held so
+  /// far relative to X_BO_ref? Otherwise names the segment in r.detail.
+  bool segment_holds(PhaseResult& r, const std::string& segment, bool ran) const;
+  std::chrono::steady_clock::time_point phase_start;
   Outcome classify(const PhaseResult& r) const;
   /// Runs `duration` seconds along a root trajectory X_WB(t) (t from 0); returns false when the
   /// phase must stop (blown up or the object is drop_distance_m off).
@@ -348,10 +354,32 @@ double GraspSimulation::Impl::pose_change(const Eigen::Isometry3d& X_BO_referenc
   return translation;
 }
 
-void GraspSimulation::Impl::begin(PhaseResult& r, const std::string& name) {
+void GraspSimulation::Impl::begin(PhaseResult& r, const std::string& name,
+                                  const Eigen::Vector3d& g_W) {
+  phase_start = std::chrono::steady_clock::now();
   r = PhaseResult{};
   r.name = name;
   current = &r;
+  set_gravity(g_W);
+}
+
+void GraspSimulation::Impl::set_gravity(const Eigen::Vector3d& g_W) {
+  gravity = g_W;
+  world->setGravity(to_bt(g_W));
+}
+
+bool GraspSimulation::Impl::segment_holds(PhaseResult& r, const std::string& segment,
+                                          bool ran) const {
+  PhaseResult probe = r;
+  if (!blew_up) {
+    probe.translation_m = pose_change(X_BO_ref, &probe.rotation_rad);
+    double penetration = 0.0;
+    contacts(probe.contact_count, penetration);
+    probe.in_contact = probe.contact_count > 0;
+  }
+  if (ran && classify(probe) == Outcome::kHeld) return true;
+  r.detail = segment;
+  return false;
 }
 
 Outcome GraspSimulation::Impl::classify(const PhaseResult& r) const {
@@ -362,8 +390,7 @@ Outcome GraspSimulation::Impl::classify(const PhaseResult& r) const {
   return Outcome::kSlipped;
 }
 
-void GraspSimulation::Impl::finish(PhaseResult& r, const Eigen::Isometry3d& X_BO_reference,
-                                   std::chrono::steady_clock::time_point start) {
+void GraspSimulation::Impl::finish(PhaseResult& r, const Eigen::Isometry3d& X_BO_reference) {
   current = nullptr;
   if (!blew_up) {
     r.translation_m = pose_change(X_BO_reference, &r.rotation_rad);
@@ -380,7 +407,7 @@ void GraspSimulation::Impl::finish(PhaseResult& r, const Eigen::Isometry3d& X_BO
   for (size_t k = 0; k < hand_body->gears.size(); ++k)
     r.joint_efforts[static_cast<size_t>(hand_body->gear_joint[k])] =
         hand_body->gears[k]->getAppliedImpulse(0) / dt;
-  r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - phase_start).count();
 }
 
 template <class Trajectory>
@@ -406,16 +433,13 @@ GraspSimulation::~GraspSimulation() = default;
 
 PhaseResult GraspSimulation::settle() {
   Impl& s = *impl_;
-  const auto start = std::chrono::steady_clock::now();
   PhaseResult r;
-  s.begin(r, "settle");
-  s.gravity.setZero();
-  s.world->setGravity(btVector3(0, 0, 0));
+  s.begin(r, "settle", Eigen::Vector3d::Zero());
   s.q_target = s.grasp.q_preshape;
   const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
   const Eigen::Isometry3d X_BO_plan = s.grasp.X_OB.inverse();
   s.run(s.params.settle_time_s, [&](double) { return X_WB0; });
-  s.finish(r, X_BO_plan, start);
+  s.finish(r, X_BO_plan);
   // At rest in preshape the hand need not touch the object: settle only fails by blowing up
   // or by pushing the object away.
   if (r.outcome == Outcome::kDropped || r.outcome == Outcome::kSlipped)
@@ -425,11 +449,8 @@ PhaseResult GraspSimulation::settle() {
 
 PhaseResult GraspSimulation::close() {
   Impl& s = *impl_;
-  const auto start = std::chrono::steady_clock::now();
   PhaseResult r;
-  s.begin(r, "close");
-  s.gravity.setZero();
-  s.world->setGravity(btVector3(0, 0, 0));
+  s.begin(r, "close", Eigen::Vector3d::Zero());
   const int n = static_cast<int>(s.hand.joints.size());
   // Reach: every driven joint follows a minimum-jerk path from where it is to the plan, all
   // arriving together, so the fingers meet the object at once at the planned contacts.
@@ -490,7 +511,7 @@ PhaseResult GraspSimulation::close() {
     if (k >= min_steps && stalled >= stall_steps && s.squeeze_fraction >= 1.0) break;
   }
   s.squeeze_fraction = 1.0;
-  s.finish(r, s.grasp.X_OB.inverse(), start);
+  s.finish(r, s.grasp.X_OB.inverse());
   // Closing is judged by contact only; the object may well move while the fingers close.
   if (r.outcome == Outcome::kSlipped) r.outcome = Outcome::kHeld;
   s.X_BO_ref = s.X_BO();
@@ -501,11 +522,8 @@ PhaseResult GraspSimulation::close() {
 
 PhaseResult GraspSimulation::lift() {
   Impl& s = *impl_;
-  const auto start = std::chrono::steady_clock::now();
   PhaseResult r;
-  s.begin(r, "lift");
-  s.gravity = Eigen::Vector3d(0, 0, -s.params.gravity_mps2);
-  s.world->setGravity(to_bt(s.gravity));
+  s.begin(r, "lift", Eigen::Vector3d(0, 0, -s.params.gravity_mps2));
   const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
   const double h = s.params.lift_height_m;
   const double T = s.params.lift_time_s;
@@ -514,31 +532,19 @@ PhaseResult GraspSimulation::lift() {
     X.translation().z() += h * min_jerk(t / T);
     return X;
   });
-  s.finish(r, s.X_BO_ref, start);
+  s.finish(r, s.X_BO_ref);
   return r;
 }
 
 PhaseResult GraspSimulation::shake() {
   Impl& s = *impl_;
-  const auto start = std::chrono::steady_clock::now();
   PhaseResult r;
-  s.begin(r, "shake");
-  s.gravity = Eigen::Vector3d(0, 0, -s.params.gravity_mps2);
-  s.world->setGravity(to_bt(s.gravity));
+  s.begin(r, "shake", Eigen::Vector3d(0, 0, -s.params.gravity_mps2));
   static const char* kAxes[3] = {"x", "y", "z"};
   // Ends a segment: hook, then held or not (the phase stops at the first failing segment).
   auto segment_held = [&](const std::string& name, bool ran) {
     if (s.segment_hook) s.segment_hook(snapshot("shake " + name));
-    PhaseResult probe = r;
-    if (!s.blew_up) {
-      probe.translation_m = s.pose_change(s.X_BO_ref, &probe.rotation_rad);
-      double penetration = 0.0;
-      s.contacts(probe.contact_count, penetration);
-      probe.in_contact = probe.contact_count > 0;
-    }
-    if (ran && s.classify(probe) == Outcome::kHeld) return true;
-    r.detail = "shake " + name;
-    return false;
+    return s.segment_holds(r, "shake " + name, ran);
   };
   bool ok = true;
   for (int a = 0; a < 3 && ok; ++a) {
@@ -573,39 +579,26 @@ PhaseResult GraspSimulation::shake() {
     });
     ok = segment_held(std::string("rock ") + kAxes[a], ran);
   }
-  s.finish(r, s.X_BO_ref, start);
+  s.finish(r, s.X_BO_ref);
   return r;
 }
 
 PhaseResult GraspSimulation::gravity6() {
   Impl& s = *impl_;
-  const auto start = std::chrono::steady_clock::now();
   PhaseResult r;
-  s.begin(r, "gravity6");
+  s.begin(r, "gravity6", Eigen::Vector3d::Zero());
   static const char* kNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
   const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
   for (int d = 0; d < 6; ++d) {
     Eigen::Vector3d g = Eigen::Vector3d::Zero();
     g[d / 2] = (d % 2 == 0 ? 1.0 : -1.0) * s.params.gravity_mps2;
-    s.gravity = g;
-    s.world->setGravity(to_bt(g));
-    bool ok = s.run(s.params.gravity6_time_s, [&](double) { return X_WB0; });
+    s.set_gravity(g);
+    const bool ran = s.run(s.params.gravity6_time_s, [&](double) { return X_WB0; });
     if (s.segment_hook) s.segment_hook(snapshot(std::string("gravity6 ") + kNames[d]));
-    PhaseResult probe = r;
-    if (!s.blew_up) {
-      probe.translation_m = s.pose_change(s.X_BO_ref, &probe.rotation_rad);
-      double penetration = 0.0;
-      s.contacts(probe.contact_count, penetration);
-      probe.in_contact = probe.contact_count > 0;
-    }
-    if (!ok || s.classify(probe) != Outcome::kHeld) {
-      r.detail = std::string("gravity ") + kNames[d];
-      break;
-    }
+    if (!s.segment_holds(r, std::string("gravity ") + kNames[d], ran)) break;
   }
-  s.finish(r, s.X_BO_ref, start);
-  s.gravity.setZero();
-  s.world->setGravity(btVector3(0, 0, 0));
+  s.finish(r, s.X_BO_ref);
+  s.set_gravity(Eigen::Vector3d::Zero());
   return r;
 }
 

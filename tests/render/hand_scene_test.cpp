@@ -143,17 +143,7 @@ TEST(AddHand, ThrowsWhenLinkPosesDoNotMatch) {
                std::invalid_argument);
 }
 
-// Counts pixels close (in RGB) to a shaded version of `rgba`: same hue, any brightness.
-int pixels_of_hue(const Image& image, const Rgba& rgba) {
-  const Eigen::Vector3d ref = rgba.head<3>().normalized();
-  return test::select_pixels(image,
-                             [&](int r, int g, int b) {
-                               const Eigen::Vector3d c(r, g, b);
-                               return c.norm() > 30 && c.normalized().dot(ref) > 0.995 &&
-                                      c.minCoeff() < 235;
-                             })
-      .count;
-}
+using test::pixels_of_hue;
 
 TEST(HandScene, PictureShowsHandAndObjectColours) {
   const HandModel hand = toy_hand();

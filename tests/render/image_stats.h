@@ -42,6 +42,18 @@ inline PixelSet non_white(const Image& image, int below = 250) {
       image, [below](int r, int g, int b) { return r < below || g < below || b < below; });
 }
 
+/// Pixels of the same hue as `rgba` at any brightness (shading), not near-white.
+inline int pixels_of_hue(const Image& image, const Eigen::Vector4d& rgba) {
+  const Eigen::Vector3d ref = rgba.head<3>().normalized();
+  return select_pixels(image,
+                       [&](int r, int g, int b) {
+                         const Eigen::Vector3d c(r, g, b);
+                         return c.norm() > 30 && c.normalized().dot(ref) > 0.995 &&
+                                c.minCoeff() < 235;
+                       })
+      .count;
+}
+
 /// Colour of pixel (x, y) as doubles in [0, 255].
 inline Eigen::Vector3d rgb_at(const Image& image, int x, int y) {
   const std::uint8_t* p = image.pixel(x, y);

@@ -8,6 +8,7 @@
 #include "cordgrasp/render/png_io.h"
 #include "hand_scene.h"
 #include "image_stats.h"
+#include "test_files.h"
 #include "test_paths.h"
 
 namespace cordgrasp::cli {
@@ -15,19 +16,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string quoted(const std::string& path) { return "\"" + path + "\""; }
-
-// Pixels of the same hue as `rgba` at any brightness (shading), not near-white.
-int pixels_of_hue(const Image& image, const Rgba& rgba) {
-  const Eigen::Vector3d ref = rgba.head<3>().normalized();
-  return test::select_pixels(image,
-                             [&](int r, int g, int b) {
-                               const Eigen::Vector3d c(r, g, b);
-                               return c.norm() > 30 && c.normalized().dot(ref) > 0.995 &&
-                                      c.minCoeff() < 235;
-                             })
-      .count;
-}
+using test::pixels_of_hue;
+using test::quoted;
 
 TEST(RenderPlan, DefaultHandOnMugShowsHandAndObjectColours) {
   const fs::path dir = fs::temp_directory_path() / "cordgrasp_render_plan_test";

@@ -372,8 +372,9 @@ TEST(RenderGround, GridDrawsGreyLinesOnTheFloor) {
 }
 
 TEST(RenderCaption, DrawsTextInABandUnderTheView) {
-  if (!caption_font_available())
-    GTEST_SKIP() << "caption font " << caption_font_path() << " absent";
+  ASSERT_TRUE(caption_font_available())
+      << "caption font " << caption_font_path()
+      << " absent: install fonts-dejavu-core (tools/install-deps.sh)";
   Scene scene = unit_cube_scene();
   scene.caption = "unit cube · α = 0.5 rad";
   RenderInfo info;
