@@ -10,6 +10,7 @@
 
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
+#include "cordgrasp/sim/sim_params.h"
 #include "test_files.h"
 #include "test_paths.h"
 
@@ -131,6 +132,36 @@ TEST_F(ValidateCli, MuOverrideOfZeroDropsEveryGrasp) {
   const nlohmann::json sim = read_out();
   EXPECT_EQ(sim["parameters"]["mu"], 0.0);
   EXPECT_EQ(sim["grasps"][0]["outcome"], "dropped");
+}
+
+TEST_F(ValidateCli, RigidContactsAtAFinerStepAreOptionsRecordedInSimJson) {
+  const auto r = run_cordgrasp("validate --plan " + plan_path() +
+                               " --tests lift --grasps 1 -q --contact-stiffness 0"
+                               " --contact-damping 0 --time-step 0.0005 --out " +
+                               out_path());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json sim = read_out();
+  EXPECT_EQ(sim["parameters"]["contact_stiffness_Npm"], 0.0);
+  EXPECT_EQ(sim["parameters"]["contact_damping_Nspm"], 0.0);
+  EXPECT_EQ(sim["parameters"]["time_step_s"], 0.0005);
+  EXPECT_EQ(sim["grasps"][0]["outcome"], "held");
+  // More steps than the default step takes for the same lift.
+  const auto default_run =
+      run_cordgrasp("validate --plan " + plan_path() + " --tests lift --grasps 1 -q --out " +
+                    out_path());
+  ASSERT_EQ(default_run.exit_code, 0) << default_run.output;
+  const nlohmann::json def = read_out();
+  EXPECT_EQ(def["parameters"]["contact_stiffness_Npm"], SimParams{}.contact_stiffness_Npm);
+  EXPECT_GT(sim["grasps"][0]["phases"][2]["steps"].get<int>(),
+            def["grasps"][0]["phases"][2]["steps"].get<int>());
+}
+
+TEST_F(ValidateCli, NegativeContactStiffnessIsAnError) {
+  const auto r = run_cordgrasp("validate --plan " + plan_path() +
+                               " --contact-stiffness -1 --out " + out_path());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("contact-stiffness"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out_path()));
 }
 
 TEST_F(ValidateCli, SnapshotsWriteOnePngPerGraspAndPhase) {

@@ -1,4 +1,5 @@
 // `cordgrasp validate`: physics validation (Bullet) of the grasps in a plan.json (issue 5).
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -31,6 +32,8 @@ struct ValidateOptions {
   std::string cache_dir;
   std::optional<double> time_step_s;
   std::optional<int> solver_iterations;
+  std::optional<double> contact_stiffness_Npm;
+  std::optional<double> contact_damping_Nspm;
   std::optional<double> concavity;
   std::optional<double> squeeze_rad;
   std::optional<double> effort_scale;
@@ -40,6 +43,13 @@ struct ValidateOptions {
   std::string out;
   bool quiet = false;
 };
+
+/// Shortest readable form of a default value for --help ("30000", "0.5").
+std::string format_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
 
 std::string canonical(const std::string& path) {
   std::error_code ec;
@@ -84,6 +94,8 @@ void run_validate(const ValidateOptions& opt) {
   params.decomposition_cache_dir = opt.cache_dir;
   if (opt.time_step_s) params.time_step_s = *opt.time_step_s;
   if (opt.solver_iterations) params.solver_iterations = *opt.solver_iterations;
+  if (opt.contact_stiffness_Npm) params.contact_stiffness_Npm = *opt.contact_stiffness_Npm;
+  if (opt.contact_damping_Nspm) params.contact_damping_Nspm = *opt.contact_damping_Nspm;
   if (opt.squeeze_rad) params.squeeze_rad = *opt.squeeze_rad;
   if (opt.effort_scale) params.effort_scale = *opt.effort_scale;
   if (opt.concavity) params.decomposition.concavity = *opt.concavity;
@@ -145,6 +157,7 @@ CORDGRASP_REGISTER_COMMAND(40, add_validate_command);
 
 void add_validate_command(CLI::App& app) {
   auto opt = std::make_shared<ValidateOptions>();
+  const SimParams defaults;
   CLI::App* cmd =
       app.add_subcommand("validate", "Check planned grasps in Bullet physics (lift, shake, "
                                      "gravity in six directions)");
@@ -159,20 +172,33 @@ void add_validate_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--mu", opt->mu, "Friction coefficient (default: the plan's μ)");
   cmd->add_option("--mass", opt->mass_kg, "Object mass [kg] (default: density × volume)");
-  cmd->add_option("--density", opt->density_kgm3, "Object density [kg/m^3] (default 500)");
+  cmd->add_option("--density", opt->density_kgm3,
+                  "Object density [kg/m^3] (default " + format_number(defaults.density_kgm3) + ")");
   cmd->add_option("--object-shape", opt->object_shape,
                   "Object collision shape: auto, hull, decomposition, gimpact")
       ->check(CLI::IsMember({"auto", "hull", "decomposition", "gimpact"}))
       ->capture_default_str();
   cmd->add_option("--cache-dir", opt->cache_dir,
                   "Directory caching convex decompositions on disk (by mesh hash)");
-  cmd->add_option("--time-step", opt->time_step_s, "Physics time step [s] (default 1/960)")
+  cmd->add_option("--time-step", opt->time_step_s,
+                  "Physics time step [s] (default 1/" +
+                      std::to_string(std::lround(1.0 / defaults.time_step_s)) + ")")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--solver-iterations", opt->solver_iterations,
-                  "Constraint solver iterations per step")
+                  "Constraint solver iterations per step (default " +
+                      std::to_string(defaults.solver_iterations) + ")")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--contact-stiffness", opt->contact_stiffness_Npm,
+                  "Finger-object contact stiffness [N/m] (default " +
+                      format_number(defaults.contact_stiffness_Npm) + "; 0 = rigid contacts)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--contact-damping", opt->contact_damping_Nspm,
+                  "Finger-object contact damping [N s/m], with --contact-stiffness (default " +
+                      format_number(defaults.contact_damping_Nspm) + ")")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--squeeze", opt->squeeze_rad,
-                  "Squeeze spring rest point past the planned joint values [rad] (default 0.5)");
+                  "Squeeze spring rest point past the planned joint values [rad] (default " +
+                      format_number(defaults.squeeze_rad) + ")");
   cmd->add_option("--effort-scale", opt->effort_scale,
                   "Multiply every joint effort limit (e.g. 0.5 for weaker motors)");
   cmd->add_option("--concavity", opt->concavity,
