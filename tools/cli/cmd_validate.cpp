@@ -44,7 +44,7 @@ struct ValidateOptions {
   bool quiet = false;
 };
 
-/// Shortest readable form of a default value for --help ("30000", "0.5").
+/// Shortest readable form of a default value for --help ("200000", "0.5").
 std::string format_number(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", value);

@@ -47,10 +47,10 @@ struct SimParams {
   // --- Integration and solver ------------------------------------------------------------
   /// Fixed time step [s]. Chosen with the contact stiffness below on 132 cord-planner SAH
   /// grasps (shipped, KIT, YCB; docs/physics.md): lift + shake outcomes agree with a 1/1920 s,
-  /// 50-iteration rigid-contact reference on 114 / 132, rigid contacts at 1/960 s (the
-  /// previous default, twice the cost) on 108 / 132 and at 1/480 s on 99 / 132. The ceiling
-  /// is ~115: a 1e-15 s change of the step alone flips 17 of 132 outcomes (marginal grasps are
-  /// chaotic).
+  /// 50-iteration rigid-contact reference on 110–114 / 132 (the step given exactly or rounded
+  /// in the 12th digit), rigid contacts at 1/960 s (the previous default, twice the cost) on
+  /// 108–109 and at 1/480 s on 99. ~115 is the ceiling: a 1e-15 s change of the step alone
+  /// flips 17 of 132 outcomes (marginal grasps are chaotic). Errs toward "not held".
   double time_step_s = 1.0 / 480.0;
   /// Sequential-impulse iterations per step: at 1/960 s the 5 kg box starts to hold at an
   /// effort scale of 0.65 with 20, 30 or 50 iterations, 0.70 with 10 (Coulomb: 0.61).
