@@ -156,6 +156,41 @@ TEST_F(ValidateCli, RigidContactsAtAFinerStepAreOptionsRecordedInSimJson) {
             def["grasps"][0]["phases"][2]["steps"].get<int>());
 }
 
+TEST_F(ValidateCli, TrialsRepeatEachGraspWithTheHandNudgedAndShowAPointContactPinchIsFragile) {
+  const std::string cmd = "validate --plan " + plan_path() +
+                          " --tests lift --grasps 1 -q --trials 3 --trial-offset 0.001 --out " +
+                          out_path();
+  const auto r = run_cordgrasp(cmd);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("grasp 0: held in "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(" / 3 trials of all grasps"), std::string::npos) << r.output;
+  const nlohmann::json sim = read_out();
+  const auto& trials = sim["grasps"][0]["trials"];
+  ASSERT_EQ(trials["count"], 3);
+  ASSERT_EQ(trials["outcomes"].size(), 3u);
+  EXPECT_EQ(trials["outcomes"][0], sim["grasps"][0]["outcome"]);  // trial 0: the plan itself
+  EXPECT_EQ(sim["parameters"]["trials"], 3);
+  EXPECT_EQ(sim["parameters"]["trial_offset_m"], 0.001);
+  EXPECT_EQ(sim["summary"]["trials"], 3);
+  // This plan pinches with point contacts (no soft-finger radius), which carry no torque about
+  // the line through the pads: the pinch as planned holds, but 1 mm off the centre line the
+  // box turns out of it. The trials show what the single run hides.
+  EXPECT_EQ(sim["parameters"]["soft_finger_radius_m"], 0.0);
+  EXPECT_EQ(trials["outcomes"][0], "held");
+  EXPECT_LT(trials["held"].get<int>(), 3) << trials.dump();
+  // Same seed, same trials.
+  ASSERT_EQ(run_cordgrasp(cmd).exit_code, 0);
+  EXPECT_EQ(read_out()["grasps"][0]["trials"], trials);
+}
+
+TEST_F(ValidateCli, ZeroTrialsIsAnError) {
+  const auto r = run_cordgrasp("validate --plan " + plan_path() + " --trials 0 --out " +
+                               out_path());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("trials"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out_path()));
+}
+
 TEST_F(ValidateCli, NegativeContactStiffnessIsAnError) {
   const auto r = run_cordgrasp("validate --plan " + plan_path() +
                                " --contact-stiffness -1 --out " + out_path());

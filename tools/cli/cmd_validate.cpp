@@ -39,6 +39,9 @@ struct ValidateOptions {
   std::optional<double> effort_scale;
   std::optional<int> hacd_triangles;
   int grasps = -1;
+  int trials = 1;
+  PerturbationParams perturbation;
+  std::uint64_t seed = 1;
   std::string snapshots_dir;
   std::string out;
   bool quiet = false;
@@ -140,6 +143,15 @@ void run_validate(const ValidateOptions& opt) {
         if (progress) std::fprintf(stderr, "validate: %d/%d grasps\n", done, total);
       },
       hooks);
+  if (opt.trials > 1)
+    add_perturbed_trials(doc, plan, hand, mesh, opt.trials, opt.perturbation, opt.seed,
+                         [&](int done, int total, const SimResult&) {
+                           std::cout << "grasp " << done - 1 << ": "
+                                     << trials_line(doc.trial_outcomes[static_cast<size_t>(done - 1)])
+                                     << '\n' << std::flush;
+                           if (progress)
+                             std::fprintf(stderr, "validate: trials of %d/%d grasps\n", done, total);
+                         });
   doc.plan_path = canonical(opt.plan);
   doc.object_path = opt.object.empty() ? plan.object_path : canonical(opt.object);
   write_sim_file(opt.out, doc, hand);
@@ -148,6 +160,11 @@ void run_validate(const ValidateOptions& opt) {
   std::printf("held %d / %d (tests %s, mu %.3g) -> %s\n", held,
               static_cast<int>(doc.results.size()), opt.tests.c_str(), params.contact.mu,
               opt.out.c_str());
+  if (!doc.trial_outcomes.empty()) {
+    std::vector<Outcome> all;
+    for (const auto& t : doc.trial_outcomes) all.insert(all.end(), t.begin(), t.end());
+    std::printf("%s of all grasps\n", trials_line(all).c_str());
+  }
 }
 
 }  // namespace
@@ -207,6 +224,22 @@ void add_validate_command(CLI::App& app) {
                   "HACD: decompose a vertex-clustered copy of at most this many triangles "
                   "(0 = the mesh itself)");
   cmd->add_option("--grasps", opt->grasps, "Validate only the first K grasps of the plan");
+  cmd->add_option("--trials", opt->trials,
+                  "Simulate each grasp N times: as planned, then with the hand moved by "
+                  "--trial-offset and turned by --trial-turn (held / not-held of marginal "
+                  "grasps is chaotic; docs/physics.md)")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  cmd->add_option("--trial-offset", opt->perturbation.offset_m,
+                  "Hand offset of the repeated trials [m], random direction")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--trial-turn", opt->perturbation.turn_rad,
+                  "Hand turn of the repeated trials about the GCP [rad], random axis")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--seed", opt->seed, "Seed of the trials' random directions")
+      ->capture_default_str();
   cmd->add_option("--snapshots", opt->snapshots_dir,
                   "Existing folder: one PNG per grasp and phase end, grasp_K_<phase>.png");
   cmd->add_option("--out", opt->out, "Output sim.json")->required();

@@ -128,12 +128,28 @@ nlohmann::json sim_to_json(const SimDocument& doc, const HandModel& hand) {
   int held = 0;
   std::map<std::string, int> outcomes = {{"held", 0}, {"slipped", 0}, {"dropped", 0},
                                          {"unstable", 0}};
+  int total_trials = 0;
+  int held_trials = 0;
   for (size_t k = 0; k < doc.results.size(); ++k) {
     nlohmann::json g = sim_result_to_json(doc.results[k], hand);
     g["index"] = k < doc.grasp_indices.size() ? doc.grasp_indices[k] : static_cast<int>(k);
     if (k < doc.grasps.size()) {
       g["epsilon"] = doc.grasps[k].epsilon;
       g["force_closure"] = doc.grasps[k].force_closure;
+    }
+    if (k < doc.trial_outcomes.size()) {
+      const std::vector<Outcome>& trials = doc.trial_outcomes[k];
+      nlohmann::json names = nlohmann::json::array();
+      int trials_held = 0;
+      for (Outcome o : trials) {
+        names.push_back(to_string(o));
+        trials_held += o == Outcome::kHeld;
+      }
+      g["trials"] = {{"count", static_cast<int>(trials.size())},
+                     {"held", trials_held},
+                     {"outcomes", names}};
+      total_trials += static_cast<int>(trials.size());
+      held_trials += trials_held;
     }
     grasps.push_back(g);
     held += doc.results[k].held();
@@ -153,6 +169,11 @@ nlohmann::json sim_to_json(const SimDocument& doc, const HandModel& hand) {
   }
   nlohmann::json params = sim_params_to_json(doc.params);
   params["tests"] = to_string(doc.tests);
+  const bool repeated = !doc.trial_outcomes.empty();
+  params["trials"] = repeated ? static_cast<int>(doc.trial_outcomes.front().size()) : 1;
+  params["trial_offset_m"] = doc.trial_perturbation.offset_m;
+  params["trial_turn_rad"] = doc.trial_perturbation.turn_rad;
+  params["trial_seed"] = doc.trial_seed;
   return {{"format", kFormat},
           {"format_version", kFormatVersion},
           {"cordgrasp_version", version()},
@@ -171,7 +192,9 @@ nlohmann::json sim_to_json(const SimDocument& doc, const HandModel& hand) {
            {{"grasps", static_cast<int>(doc.results.size())},
             {"held", held},
             {"outcomes", outcomes},
-            {"wall_time_s", doc.wall_time_s}}}};
+            {"wall_time_s", doc.wall_time_s},
+            {"trials", repeated ? nlohmann::json(total_trials) : nlohmann::json(nullptr)},
+            {"held_trials", repeated ? nlohmann::json(held_trials) : nlohmann::json(nullptr)}}}};
 }
 
 void write_sim_file(const std::string& path, const SimDocument& doc, const HandModel& hand) {
@@ -224,6 +247,38 @@ SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const
   doc.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return doc;
+}
+
+void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const HandModel& hand,
+                          const Mesh& mesh, int trials, const PerturbationParams& perturbation,
+                          std::uint64_t seed, const ValidateProgress& progress) {
+  if (trials < 1 || trials > 1000)
+    throw std::invalid_argument("add_perturbed_trials: trials must be in [1, 1000], got " +
+                                std::to_string(trials));
+  const auto start = std::chrono::steady_clock::now();
+  doc.trial_perturbation = perturbation;
+  doc.trial_seed = seed;
+  doc.trial_outcomes.assign(doc.results.size(), {});
+  const int total = static_cast<int>(doc.results.size());
+  for (int k = 0; k < total; ++k) {
+    std::vector<Outcome>& outcomes = doc.trial_outcomes[static_cast<size_t>(k)];
+    outcomes.push_back(doc.results[static_cast<size_t>(k)].outcome);
+    const Grasp& planned = plan.grasps[static_cast<size_t>(doc.grasp_indices[static_cast<size_t>(k)])];
+    for (int t = 1; t < trials; ++t) {
+      const Grasp g = perturbed_grasp(planned, perturbation,
+                                      seed + 1000 * static_cast<std::uint64_t>(k) + t);
+      outcomes.push_back(validate_grasp(mesh, hand, g, doc.params, doc.tests).outcome);
+    }
+    if (progress) progress(k + 1, total, doc.results[static_cast<size_t>(k)]);
+  }
+  doc.wall_time_s +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string trials_line(const std::vector<Outcome>& outcomes) {
+  int held = 0;
+  for (Outcome o : outcomes) held += o == Outcome::kHeld;
+  return "held in " + std::to_string(held) + " / " + std::to_string(outcomes.size()) + " trials";
 }
 
 std::string sim_result_line(const SimResult& r) {

@@ -10,11 +10,14 @@
 //   object: {shape, parts, mass_kg, volume_m3, closed, com_m, principal_inertia_kgm2,
 //            decomposition_s}
 //   grasps: [{index (in the plan), outcome, failed_phase (null when held), detail, epsilon,
-//             force_closure, wall_time_s,
+//             force_closure, wall_time_s, trials (with --trials N > 1: {count, held,
+//             outcomes: [trial 0 = the plan as written, then perturbed copies]}),
 //             phases: [{name, outcome, detail, translation_m, rotation_rad, max_translation_m,
 //                       in_contact, contact_count, max_contact_count, max_penetration_m,
 //                       joint_efforts: {joint: N·m or N}, sim_time_s, wall_time_s, steps}]}]
-//   summary: {grasps, held, outcomes: {held, slipped, dropped, unstable}, wall_time_s}
+//   summary: {grasps, held, outcomes: {held, slipped, dropped, unstable}, wall_time_s,
+//             trials, held_trials (over every trial of every grasp)}
+//   parameters also: trials, trial_offset_m, trial_turn_rad, trial_seed
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -23,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "cordgrasp/core/grasp_perturbation.h"
 #include "cordgrasp/core/hand_model.h"
 #include "cordgrasp/core/mesh.h"
 #include "cordgrasp/sim/validate_grasp.h"
@@ -46,6 +50,11 @@ struct SimDocument {
   std::vector<SimResult> results;
   std::vector<Grasp> grasps;       ///< the validated grasps (for ε, force closure)
   double wall_time_s = 0.0;
+  /// Repeated trials (add_perturbed_trials): per grasp, the outcome of every trial; trial 0 is
+  /// results[k]. Empty when each grasp was simulated once.
+  std::vector<std::vector<Outcome>> trial_outcomes;
+  PerturbationParams trial_perturbation;
+  std::uint64_t trial_seed = 1;
 };
 
 /// Every SimParams field as JSON (units in the names).
@@ -75,6 +84,18 @@ SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const
                           const SimParams& params, const SimTests& tests, int max_grasps = -1,
                           const ValidateProgress& progress = {},
                           const GraspPhaseHooks& hooks = {});
+
+/// Held / not-held of a marginal grasp is chaotic (docs/physics.md): validates every grasp of
+/// `doc` `trials` − 1 more times with the hand moved and turned slightly (perturbed_grasp,
+/// seed trial_seed + 1000·k + t for trial t of grasp k) and records all outcomes in
+/// doc.trial_outcomes; `progress` is called after each grasp's trials.
+/// @throws std::invalid_argument when trials is not in [1, 1000].
+void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const HandModel& hand,
+                          const Mesh& mesh, int trials, const PerturbationParams& perturbation,
+                          std::uint64_t seed, const ValidateProgress& progress = {});
+
+/// Trials of a grasp that held: "held in 3 / 5 trials".
+std::string trials_line(const std::vector<Outcome>& outcomes);
 
 /// "held (lift held, shake held, gravity6 held) mass 0.12 kg, 0.41 s"
 std::string sim_result_line(const SimResult& result);
