@@ -1,5 +1,6 @@
 #include "sim_json.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -140,11 +141,8 @@ nlohmann::json sim_to_json(const SimDocument& doc, const HandModel& hand) {
     if (k < doc.trial_outcomes.size()) {
       const std::vector<Outcome>& trials = doc.trial_outcomes[k];
       nlohmann::json names = nlohmann::json::array();
-      int trials_held = 0;
-      for (Outcome o : trials) {
-        names.push_back(to_string(o));
-        trials_held += o == Outcome::kHeld;
-      }
+      for (Outcome o : trials) names.push_back(to_string(o));
+      const int trials_held = count_held(trials);
       g["trials"] = {{"count", static_cast<int>(trials.size())},
                      {"held", trials_held},
                      {"outcomes", names}};
@@ -259,26 +257,29 @@ void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const Hand
   doc.trial_perturbation = perturbation;
   doc.trial_seed = seed;
   doc.trial_outcomes.assign(doc.results.size(), {});
-  const int total = static_cast<int>(doc.results.size());
-  for (int k = 0; k < total; ++k) {
-    std::vector<Outcome>& outcomes = doc.trial_outcomes[static_cast<size_t>(k)];
-    outcomes.push_back(doc.results[static_cast<size_t>(k)].outcome);
-    const Grasp& planned = plan.grasps[static_cast<size_t>(doc.grasp_indices[static_cast<size_t>(k)])];
+  const size_t total = doc.results.size();
+  for (size_t k = 0; k < total; ++k) {
+    std::vector<Outcome>& outcomes = doc.trial_outcomes[k];
+    outcomes.push_back(doc.results[k].outcome);
+    const Grasp& planned = plan.grasps[static_cast<size_t>(doc.grasp_indices[k])];
     for (int t = 1; t < trials; ++t) {
-      const Grasp g = perturbed_grasp(planned, perturbation,
-                                      seed + 1000 * static_cast<std::uint64_t>(k) + t);
+      const Grasp g = perturbed_grasp(planned, perturbation, seed + 1000 * k + t);
       outcomes.push_back(validate_grasp(mesh, hand, g, doc.params, doc.tests).outcome);
     }
-    if (progress) progress(k + 1, total, doc.results[static_cast<size_t>(k)]);
+    if (progress)
+      progress(static_cast<int>(k + 1), static_cast<int>(total), doc.results[k]);
   }
   doc.wall_time_s +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+int count_held(const std::vector<Outcome>& outcomes) {
+  return static_cast<int>(std::count(outcomes.begin(), outcomes.end(), Outcome::kHeld));
+}
+
 std::string trials_line(const std::vector<Outcome>& outcomes) {
-  int held = 0;
-  for (Outcome o : outcomes) held += o == Outcome::kHeld;
-  return "held in " + std::to_string(held) + " / " + std::to_string(outcomes.size()) + " trials";
+  return "held in " + std::to_string(count_held(outcomes)) + " / " +
+         std::to_string(outcomes.size()) + " trials";
 }
 
 std::string sim_result_line(const SimResult& r) {

@@ -94,6 +94,9 @@ void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const Hand
                           const Mesh& mesh, int trials, const PerturbationParams& perturbation,
                           std::uint64_t seed, const ValidateProgress& progress = {});
 
+/// How many of `outcomes` are held.
+int count_held(const std::vector<Outcome>& outcomes);
+
 /// Trials of a grasp that held: "held in 3 / 5 trials".
 std::string trials_line(const std::vector<Outcome>& outcomes);
 
