@@ -134,15 +134,15 @@ TEST_F(ValidateCli, MuOverrideOfZeroDropsEveryGrasp) {
   EXPECT_EQ(sim["grasps"][0]["outcome"], "dropped");
 }
 
-TEST_F(ValidateCli, RigidContactsAtAFinerStepAreOptionsRecordedInSimJson) {
+TEST_F(ValidateCli, CompliantContactsAndTheTimeStepAreOptionsRecordedInSimJson) {
   const auto r = run_cordgrasp("validate --plan " + plan_path() +
-                               " --tests lift --grasps 1 -q --contact-stiffness 0"
-                               " --contact-damping 0 --time-step 0.0005 --out " +
+                               " --tests lift --grasps 1 -q --contact-stiffness 2e5"
+                               " --contact-damping 400 --time-step 0.0005 --out " +
                                out_path());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json sim = read_out();
-  EXPECT_EQ(sim["parameters"]["contact_stiffness_Npm"], 0.0);
-  EXPECT_EQ(sim["parameters"]["contact_damping_Nspm"], 0.0);
+  EXPECT_EQ(sim["parameters"]["contact_stiffness_Npm"], 2e5);
+  EXPECT_EQ(sim["parameters"]["contact_damping_Nspm"], 400.0);
   EXPECT_EQ(sim["parameters"]["time_step_s"], 0.0005);
   EXPECT_EQ(sim["grasps"][0]["outcome"], "held");
   // More steps than the default step takes for the same lift.

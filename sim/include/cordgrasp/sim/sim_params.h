@@ -45,25 +45,23 @@ struct SimParams {
   double object_margin_m = 0.5e-3;
 
   // --- Integration and solver ------------------------------------------------------------
-  /// Fixed time step [s]. Chosen with the contact stiffness below on 132 cord-planner SAH
-  /// grasps (shipped, KIT, YCB; docs/physics.md): lift + shake outcomes agree with a 1/1920 s,
-  /// 50-iteration rigid-contact reference on 110–114 / 132 (the step given exactly or rounded
-  /// in the 12th digit), rigid contacts at 1/960 s (the previous default, twice the cost) on
-  /// 108–109 and at 1/480 s on 99. ~115 is the ceiling: a 1e-15 s change of the step alone
-  /// flips 17 of 132 outcomes (marginal grasps are chaotic). Errs toward "not held".
-  double time_step_s = 1.0 / 480.0;
+  /// Fixed time step [s] (docs/physics.md). Lift + shake outcomes against a 1/1920 s,
+  /// 50-iteration reference: cordgrasp_sah 108–109 / 132 grasps agree, schunk_sah 68 / 88
+  /// (rigid contacts). Compliant contacts at 1/480 s cost half as much and agree as well for
+  /// cordgrasp_sah (110–114 / 132) but not for schunk_sah (54 / 88, fingers slip): not used.
+  /// Outcomes of marginal grasps are chaotic: a 1e-15 s change of the step flips 17 of 132.
+  double time_step_s = 1.0 / 960.0;
   /// Sequential-impulse iterations per step: at 1/960 s the 5 kg box starts to hold at an
   /// effort scale of 0.65 with 20, 30 or 50 iterations, 0.70 with 10 (Coulomb: 0.61).
   int solver_iterations = 20;
   /// Error reduction of contacts and joint constraints (Bullet erp, erp2) [0..1].
   double erp = 0.2;
   /// Contact stiffness of finger–object contacts [N/m] (0: rigid contacts with erp/cfm).
-  /// Compliant contacts penetrate force / stiffness (median 0.5 mm, 90th percentile 3.9 mm of
-  /// the 132 grasps' largest) and keep the solver accurate at 1/480 s, where rigid ones are not.
-  /// Softer (3e4 N/m) pads lose squeeze: the 5 kg box needs 0.75 of its motors, not 0.65.
-  double contact_stiffness_Npm = 2.0e5;
+  /// Compliant contacts penetrate force / stiffness and let the solver converge at larger
+  /// steps; 2e5 N/m with 400 N·s/m at 1/480 s was measured and rejected (time_step_s).
+  double contact_stiffness_Npm = 0.0;
   /// Contact damping [N·s/m] (with contact_stiffness_Npm > 0).
-  double contact_damping_Nspm = 400.0;
+  double contact_damping_Nspm = 0.0;
   /// Give hulls and boxes Bullet's polyhedral features. Off: with SAT off (Bullet's default)
   /// Bullet 3.24 then drops the hulls' margins, so shrink-wrapped hulls sink by the margin
   /// and the 5 kg box needs 0.75 instead of 0.65 of its motors (docs/physics.md).
