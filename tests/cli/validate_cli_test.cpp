@@ -83,6 +83,15 @@ class ValidateCli : public ::testing::Test {
     std::ofstream(path) << plan.dump(1);
   }
 
+  /// `validate --plan <plan> <args> --out <out>` fails, names `needle` and writes nothing.
+  void expect_error(const std::string& args, const std::string& needle) const {
+    const auto r = run_cordgrasp("validate --plan " + plan_path() + " " + args + " --out " +
+                                 out_path());
+    EXPECT_NE(r.exit_code, 0);
+    EXPECT_NE(r.output.find(needle), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(out_path()));
+  }
+
   nlohmann::json read_out() const {
     std::ifstream in(out_path());
     return nlohmann::json::parse(in);
@@ -183,20 +192,10 @@ TEST_F(ValidateCli, TrialsRepeatEachGraspWithTheHandNudgedAndShowAPointContactPi
   EXPECT_EQ(read_out()["grasps"][0]["trials"], trials);
 }
 
-TEST_F(ValidateCli, ZeroTrialsIsAnError) {
-  const auto r = run_cordgrasp("validate --plan " + plan_path() + " --trials 0 --out " +
-                               out_path());
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.output.find("trials"), std::string::npos) << r.output;
-  EXPECT_FALSE(std::filesystem::exists(out_path()));
-}
+TEST_F(ValidateCli, ZeroTrialsIsAnError) { expect_error("--trials 0", "trials"); }
 
 TEST_F(ValidateCli, NegativeContactStiffnessIsAnError) {
-  const auto r = run_cordgrasp("validate --plan " + plan_path() +
-                               " --contact-stiffness -1 --out " + out_path());
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.output.find("contact-stiffness"), std::string::npos) << r.output;
-  EXPECT_FALSE(std::filesystem::exists(out_path()));
+  expect_error("--contact-stiffness -1", "contact-stiffness");
 }
 
 TEST_F(ValidateCli, SnapshotsWriteOnePngPerGraspAndPhase) {
@@ -214,26 +213,15 @@ TEST_F(ValidateCli, SnapshotsWriteOnePngPerGraspAndPhase) {
 }
 
 TEST_F(ValidateCli, SnapshotsIntoAMissingFolderIsAnErrorBeforeSimulating) {
-  const auto r = run_cordgrasp("validate --plan " + plan_path() + " --snapshots " +
-                               (dir_ / "nowhere").string() + " --out " + out_path());
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.output.find("--snapshots"), std::string::npos) << r.output;
-  EXPECT_FALSE(std::filesystem::exists(out_path()));
+  expect_error("--snapshots " + (dir_ / "nowhere").string(), "--snapshots");
 }
 
 TEST_F(ValidateCli, PlanForAnotherHandIsAnError) {
-  const auto r = run_cordgrasp("validate --plan " + plan_path() +
-                               " --hand cordgrasp_sah --out " + out_path());
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.output.find("made for hand 'parallel_gripper'"), std::string::npos) << r.output;
-  EXPECT_FALSE(std::filesystem::exists(out_path()));
+  expect_error("--hand cordgrasp_sah", "made for hand 'parallel_gripper'");
 }
 
 TEST_F(ValidateCli, PlanForAnotherObjectIsAnError) {
-  const auto r = run_cordgrasp("validate --plan " + plan_path() + " --object " + source_dir() +
-                               "/assets/objects/mug.obj --out " + out_path());
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.output.find("was planned for object"), std::string::npos) << r.output;
+  expect_error("--object " + source_dir() + "/assets/objects/mug.obj", "was planned for object");
 }
 
 TEST_F(ValidateCli, SameObjectGivenExplicitlyIsAccepted) {
