@@ -9,7 +9,8 @@
 # Environment: CORDGRASP (the executable, default build/tools/cordgrasp), DATA (shared data,
 # default ../shared/data), TIME_LIMIT (plan time limit per object, default 10 s),
 # SOFT_FINGER (soft-finger radius for two-finger grippers, default 0.005 m: two point
-# contacts are never force closure).
+# contacts are never force closure), TRIALS (validate --trials: each grasp also simulated with
+# the hand nudged; held / not-held of marginal grasps is chaotic, docs/physics.md; default 1).
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 OUT="${1:-/tmp/cordgrasp_hold_rates}"
@@ -21,6 +22,7 @@ CG="${CORDGRASP:-$ROOT/build/tools/cordgrasp}"
 DATA="${DATA:-$ROOT/../shared/data}"
 TIME_LIMIT="${TIME_LIMIT:-10}"
 SOFT_FINGER="${SOFT_FINGER:-0.005}"
+TRIALS="${TRIALS:-1}"
 mkdir -p "$OUT"
 
 declare -A SETS
@@ -33,7 +35,7 @@ for hand in "${HANDS[@]}"; do
   extra=()
   case "$hand" in panda_hand|parallel_gripper) extra=(--soft-finger-radius "$SOFT_FINGER") ;; esac
   for set in shipped kit ycb; do
-    held=0; total=0; no_plan=0
+    held=0; total=0; no_plan=0; trials_held=0; trials_total=0
     for obj in ${SETS[$set]}; do
       name="$(basename "$obj" .obj)"
       base="$OUT/$hand/$set/$name"
@@ -43,14 +45,21 @@ for hand in "${HANDS[@]}"; do
           > "$base.plan.txt" 2>&1; then
         no_plan=$((no_plan + 1)); continue
       fi
-      "$CG" validate --plan "$base.plan.json" --tests lift,shake --quiet \
+      "$CG" validate --plan "$base.plan.json" --tests lift,shake --trials "$TRIALS" --quiet \
           --out "$base.sim.json" > "$base.sim.txt" 2>&1 || { echo "validate failed: $base"; continue; }
-      line="$(tail -n 1 "$base.sim.txt")"   # "held k / n (...)"
+      line="$(grep '^held [0-9]* / ' "$base.sim.txt")"   # "held k / n (...)"
       k="$(echo "$line" | awk '{print $2}')"; n="$(echo "$line" | awk '{print $4}')"
       held=$((held + k)); total=$((total + n))
+      if [ "$TRIALS" -gt 1 ]; then   # "held in k / n trials of all grasps"
+        t="$(tail -n 1 "$base.sim.txt")"
+        trials_held=$((trials_held + $(echo "$t" | awk '{print $3}')))
+        trials_total=$((trials_total + $(echo "$t" | awk '{print $5}')))
+      fi
       echo "$hand $set $name: $line"
     done
-    summary+=("$hand $set: held $held / $total force-closure grasps ($no_plan objects without a plan)")
+    trials_text=""
+    [ "$TRIALS" -gt 1 ] && trials_text=", held in $trials_held / $trials_total trials"
+    summary+=("$hand $set: held $held / $total force-closure grasps$trials_text ($no_plan objects without a plan)")
   done
 done
 printf '%s\n' "${summary[@]}" | tee "$OUT/summary.txt"

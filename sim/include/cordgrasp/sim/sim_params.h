@@ -76,7 +76,7 @@ struct SimParams {
   double gear_erp = 0.5;
   /// The solver stops iterating once the squared impulse change of an iteration is below
   /// this (Bullet leastSquaresResidualThreshold) [N²·s²]; 0 = always run every iteration
-  /// (1e-12 saved ~30% CPU on one grasp but agreed with the reference on 28, not 29, of 30).
+  /// (1e-12 saved no time on 220 grasps at the default and changed 2 outcomes).
   double solver_residual_threshold = 0.0;
   /// Friction as Bullet's implicit cone (true) or the two-direction pyramid (false).
   bool cone_friction = true;
