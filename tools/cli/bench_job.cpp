@@ -17,21 +17,16 @@
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "sim_json.h"
+#include "text_format.h"
 
 namespace cordgrasp::cli {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string format_double(double v, const char* fmt) {
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), fmt, v);
-  return buf;
-}
-
 // Quantities: 9 significant digits (exact enough to compare runs); times: microseconds.
-std::string number(double v) { return format_double(v, "%.9g"); }
-std::string seconds(double v) { return format_double(v, "%.6f"); }
+std::string number(double v) { return format_number(v, "%.9g"); }
+std::string seconds(double v) { return format_number(v, "%.6f"); }
 std::string optional_number(const std::optional<double>& v) { return v ? number(*v) : ""; }
 std::string optional_seconds(const std::optional<double>& v) { return v ? seconds(*v) : ""; }
 
@@ -150,13 +145,6 @@ Stats stats_of(std::vector<double> v) {
   return s;
 }
 
-std::string fixed(double v, int digits) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(digits);
-  s << v;
-  return s.str();
-}
 
 // "| 10/10 | 100 % | ..." cells of one group of rows.
 std::string summary_cells(const std::vector<const BenchRow*>& rows) {
@@ -188,7 +176,7 @@ std::string summary_cells(const std::vector<const BenchRow*>& rows) {
       << or_dash(t.n > 0, fixed(t.mean, 3)) << " | " << or_dash(t.n > 0, fixed(t.sd, 3)) << " | "
       << or_dash(tt.n > 0, fixed(tt.mean, 3)) << " | " << or_dash(a.n > 0, fixed(a.mean, 3))
       << " | " << or_dash(a.n > 0, fixed(a.sd, 3)) << " | "
-      << or_dash(e.n > 0, format_double(e.mean, "%.3g")) << " | "
+      << or_dash(e.n > 0, format_number(e.mean, "%.3g")) << " | "
       << or_dash(simulated > 0, std::to_string(held) + "/" + std::to_string(simulated) + " (" +
                                     fixed(simulated ? 100.0 * held / simulated : 0.0, 0) +
                                     " %)")

@@ -22,6 +22,7 @@
 #include "render_options.h"
 #include "run_report.h"
 #include "sim_json.h"
+#include "text_format.h"
 
 namespace cordgrasp::cli {
 namespace {
@@ -58,11 +59,6 @@ class Progress {
   Clock::time_point start_;
 };
 
-std::string fixed(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*f", digits, v);
-  return buf;
-}
 
 /// Phases whose end states the physics picture shows.
 bool pictured_phase(const std::string& phase) {

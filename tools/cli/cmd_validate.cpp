@@ -15,6 +15,7 @@
 #include "plan_job.h"
 #include "plan_json.h"
 #include "sim_json.h"
+#include "text_format.h"
 
 namespace cordgrasp::cli {
 namespace {
@@ -46,13 +47,6 @@ struct ValidateOptions {
   std::string out;
   bool quiet = false;
 };
-
-/// Shortest readable form of a default value for --help ("200000", "0.5").
-std::string format_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
 
 std::string canonical(const std::string& path) {
   std::error_code ec;

@@ -1,4 +1,5 @@
 #include "run_report.h"
+#include "text_format.h"
 
 #include <cmath>
 #include <cstdio>
@@ -7,11 +8,7 @@
 namespace cordgrasp::cli {
 namespace {
 
-std::string num(double v, const char* fmt = "%.3g") {
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), fmt, v);
-  return buf;
-}
+std::string num(double v, const char* fmt = "%.3g") { return format_number(v, fmt); }
 
 std::string outcome_text(const SimResult& r) {
   std::string text = to_string(r.outcome);
