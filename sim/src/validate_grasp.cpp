@@ -98,6 +98,9 @@ SimResult validate_grasp(const Mesh& mesh, const HandModel& hand, const Grasp& g
     result.X_WO = sim.X_WO_start();
     sim.set_segment_hook(hook);
     const bool ready = settle_and_close(sim, result, hook, true);
+    const PhaseResult* settle = result.phase("settle");
+    result.preshape_overlap =
+        settle != nullptr && settle->translation_m > params.settle_shift_tolerance_m;
     if (ready && (tests.lift || tests.shake)) {
       if (tests.lift) {
         result.phases.push_back(sim.lift());

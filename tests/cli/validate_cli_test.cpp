@@ -11,6 +11,7 @@
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/sim/sim_params.h"
+#include "sim_json.h"
 #include "test_files.h"
 #include "test_paths.h"
 
@@ -122,6 +123,8 @@ TEST_F(ValidateCli, WritesSimJsonAndOneLinePerGraspAndATotal) {
   const auto& g = sim["grasps"][0];
   EXPECT_EQ(g["outcome"], "held");
   EXPECT_TRUE(g["failed_phase"].is_null());
+  EXPECT_FALSE(g["preshape_overlap"].get<bool>());
+  EXPECT_EQ(r.output.find("overlaps"), std::string::npos) << r.output;
   std::vector<std::string> phases;
   for (const auto& p : g["phases"]) phases.push_back(p["name"]);
   EXPECT_EQ(phases, (std::vector<std::string>{"settle", "close", "lift", "shake"}));
@@ -241,6 +244,23 @@ TEST_F(ValidateCli, UnknownTestOrMissingPlanIsAnError) {
                     out_path());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("missing.json"), std::string::npos) << r.output;
+}
+
+TEST(SimResultLine, SaysHowFarSettlePushedTheObjectWhenThePreshapeHandOverlapsIt) {
+  SimResult r;
+  r.outcome = Outcome::kDropped;
+  PhaseResult settle;
+  settle.name = "settle";
+  settle.outcome = Outcome::kHeld;
+  settle.translation_m = 0.0123;
+  r.phases = {settle};
+  r.preshape_overlap = true;
+  EXPECT_NE(cli::sim_result_line(r).find("overlaps the object's collision shape (settle moved "
+                                         "it 12.3 mm)"),
+            std::string::npos)
+      << cli::sim_result_line(r);
+  r.preshape_overlap = false;
+  EXPECT_EQ(cli::sim_result_line(r).find("overlaps"), std::string::npos);
 }
 
 }  // namespace

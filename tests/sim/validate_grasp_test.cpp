@@ -72,6 +72,22 @@ TEST(ValidateGrasp, ParallelGripperPinchingABoxAtItsCentreHoldsThroughEveryTest)
   EXPECT_NEAR(r.object.mass_kg, SimParams{}.density_kgm3 * std::pow(kBoxSide_m, 3), 1e-12);
 }
 
+TEST(ValidateGrasp, FlagsAPreshapeHandPlacedIntoTheObject) {
+  const SimTests lift_only{true, false, false};
+  const SimResult clear = validate_grasp(box(), gripper(), centre_pinch(), gripper_params(), lift_only);
+  EXPECT_FALSE(clear.preshape_overlap);
+  // GCP 1 cm off the centre along x with the pads 3 cm from it: one pad starts 5 mm inside.
+  constexpr double kOffCentre_m = 0.01;
+  constexpr double kNarrowPreshape_m = 0.03;
+  const Grasp into = test::top_down_pinch(gripper(), Eigen::Vector3d(kOffCentre_m, 0, 0),
+                                          0.5 * kBoxSide_m - kOffCentre_m, kNarrowPreshape_m);
+  const SimResult r = validate_grasp(box(), gripper(), into, gripper_params(), lift_only);
+  EXPECT_TRUE(r.preshape_overlap);
+  const PhaseResult* settle = r.phase("settle");
+  ASSERT_NE(settle, nullptr);
+  EXPECT_GT(settle->translation_m, SimParams{}.settle_shift_tolerance_m);
+}
+
 TEST(ValidateGrasp, PinchWithoutFrictionDrops) {
   SimParams params = gripper_params();
   params.contact.mu = 0.0;

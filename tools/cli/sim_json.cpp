@@ -11,6 +11,7 @@
 #include "cordgrasp/core/version.h"
 #include "cordgrasp/sim/backend_info.h"
 #include "json_util.h"
+#include "text_format.h"
 
 namespace cordgrasp::cli {
 
@@ -120,6 +121,7 @@ nlohmann::json sim_result_to_json(const SimResult& r, const HandModel& hand) {
   return {{"outcome", to_string(r.outcome)},
           {"failed_phase", failed ? nlohmann::json(failed->name) : nlohmann::json(nullptr)},
           {"detail", failed ? failed->detail : std::string()},
+          {"preshape_overlap", r.preshape_overlap},
           {"wall_time_s", r.wall_time_s},
           {"phases", phases}};
 }
@@ -298,6 +300,9 @@ std::string sim_result_line(const SimResult& r) {
   char tail[96];
   std::snprintf(tail, sizeof(tail), ") mass %.3f kg, %.2f s", r.object.mass_kg, r.wall_time_s);
   s << tail;
+  if (const PhaseResult* settle = r.preshape_overlap ? r.phase("settle") : nullptr)
+    s << "; the preshape hand overlaps the object's collision shape (settle moved it "
+      << fixed(1e3 * settle->translation_m, 1) << " mm)";
   return s.str();
 }
 

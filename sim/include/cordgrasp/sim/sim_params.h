@@ -163,6 +163,10 @@ struct SimParams {
   double contact_distance_m = 1e-3;  ///< ...and a hand–object contact this close remains
   double unstable_speed_mps = 10.0;  ///< any body faster than this, or NaN = unstable
   double drop_distance_m = 0.10;     ///< a phase stops early once the object is this far off
+  /// Settle keeps the hand still in preshape with gravity off: only a preshape hand that
+  /// overlaps the object can move it. Moving more than this sets SimResult::preshape_overlap
+  /// [m] (0.26–0.33 mm of contact penetration at settle moved no object more than 2.3 mm).
+  double settle_shift_tolerance_m = 1e-3;
 };
 
 }  // namespace cordgrasp

@@ -63,6 +63,11 @@ struct SimResult {
   SimObjectInfo object;
   Eigen::Isometry3d X_WO = Eigen::Isometry3d::Identity();  ///< object in world at the start
   double wall_time_s = 0.0;         ///< whole validation [s]
+  /// The object moved more than SimParams::settle_shift_tolerance_m during settle: the
+  /// preshape hand overlaps the object as simulated. For a planner's grasp (whose preshape is
+  /// collision-free against the mesh) the collision shape — hull or convex parts — covers space
+  /// the mesh leaves free, and the outcome tests that shape more than the grasp.
+  bool preshape_overlap = false;
   bool held() const { return outcome == Outcome::kHeld; }
   /// The phase called `name`, or nullptr.
   const PhaseResult* phase(const std::string& name) const;
