@@ -39,6 +39,7 @@ struct ValidateOptions {
   std::optional<double> squeeze_rad;
   std::optional<double> effort_scale;
   std::optional<int> hacd_triangles;
+  std::optional<int> hull_vertices;
   int grasps = -1;
   int trials = 1;
   PerturbationParams perturbation;
@@ -97,6 +98,7 @@ void run_validate(const ValidateOptions& opt) {
   if (opt.effort_scale) params.effort_scale = *opt.effort_scale;
   if (opt.concavity) params.decomposition.concavity = *opt.concavity;
   if (opt.hacd_triangles) params.decomposition.max_input_triangles = *opt.hacd_triangles;
+  if (opt.hull_vertices) params.decomposition.max_hull_vertices = *opt.hull_vertices;
   const SimTests tests = sim_tests_from_string(opt.tests);
 
   const bool progress = !opt.quiet;
@@ -217,6 +219,11 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--hacd-triangles", opt->hacd_triangles,
                   "HACD: decompose a vertex-clustered copy of at most this many triangles "
                   "(0 = the mesh itself)");
+  cmd->add_option("--hull-vertices", opt->hull_vertices,
+                  "Most vertices of each object hull (the single hull or a decomposition part; "
+                  "default " +
+                      std::to_string(defaults.decomposition.max_hull_vertices) + ")")
+      ->check(CLI::Range(4, 100000));
   cmd->add_option("--grasps", opt->grasps, "Validate only the first K grasps of the plan");
   cmd->add_option("--trials", opt->trials,
                   "Simulate each grasp N times: as planned, then with the hand moved by "
