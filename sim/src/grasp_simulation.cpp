@@ -181,6 +181,7 @@ GraspSimulation::Impl::Impl(const Mesh& mesh, const HandModel& h, const Grasp& g
   si.m_timeStep = dt;
   si.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
   if (!params.cone_friction) si.m_solverMode |= SOLVER_DISABLE_IMPLICIT_CONE_FRICTION;
+  if (params.articulated_warmstarting) si.m_solverMode |= SOLVER_USE_ARTICULATED_WARMSTARTING;
   si.m_leastSquaresResidualThreshold = params.solver_residual_threshold;
   world->setGravity(btVector3(0, 0, 0));
 

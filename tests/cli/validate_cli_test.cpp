@@ -168,6 +168,21 @@ TEST_F(ValidateCli, CompliantContactsAndTheTimeStepAreOptionsRecordedInSimJson) 
             def["grasps"][0]["phases"][2]["steps"].get<int>());
 }
 
+TEST_F(ValidateCli, WarmstartAndHullVerticesAreOptionsRecordedInSimJson) {
+  const auto r = run_cordgrasp("validate --plan " + plan_path() +
+                               " --tests lift --grasps 1 -q --warmstart --hull-vertices 32 --out " +
+                               out_path());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json sim = read_out();
+  EXPECT_TRUE(sim["parameters"]["articulated_warmstarting"].get<bool>());
+  EXPECT_EQ(sim["parameters"]["decomposition"]["max_hull_vertices"], 32);
+  EXPECT_EQ(sim["grasps"][0]["outcome"], "held");
+}
+
+TEST_F(ValidateCli, HullsOfFewerThanFourVerticesAreAnError) {
+  expect_error("--hull-vertices 3", "hull-vertices");
+}
+
 TEST_F(ValidateCli, TrialsRepeatEachGraspWithTheHandNudgedAndShowAPointContactPinchIsFragile) {
   const std::string cmd = "validate --plan " + plan_path() +
                           " --tests lift --grasps 1 -q --trials 3 --trial-offset 0.001 --out " +

@@ -95,22 +95,25 @@ BENCHMARK(BM_SimStepSahMug)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(2);
 
-/// Object hull size and solver iterations against speed (docs/physics.md): the default hand
-/// on the shipped mug with part hulls of at most arg0 vertices and arg1 solver iterations
-/// (filter: HullIterations).
-void BM_HullIterationsSahMug(benchmark::State& state) {
+/// Object hulls and solver settings against speed (docs/physics.md): the default hand on the
+/// shipped mug with part hulls of at most arg0 vertices, arg1 solver iterations and
+/// articulated warmstarting when arg2 is 1 (filter: SolverSahMug).
+void BM_SolverSahMug(benchmark::State& state) {
   static const HandModel hand = load_hand("cordgrasp_sah");
   static const Mesh mesh = make_object_mesh("mug");
   SimParams params;
   params.decomposition.max_hull_vertices = static_cast<int>(state.range(0));
   params.solver_iterations = static_cast<int>(state.range(1));
+  params.articulated_warmstarting = state.range(2) == 1;
   validate_benchmark(state, hand, mesh, params);
 }
-BENCHMARK(BM_HullIterationsSahMug)
-    ->ArgNames({"hull_vertices", "iterations"})
-    ->Args({64, 20})
-    ->Args({32, 20})
-    ->Args({64, 10})
+BENCHMARK(BM_SolverSahMug)
+    ->ArgNames({"hull_vertices", "iterations", "warmstart"})
+    ->Args({64, 20, 0})
+    ->Args({64, 20, 1})
+    ->Args({32, 20, 0})
+    ->Args({64, 10, 0})
+    ->Args({64, 10, 1})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(2);
 

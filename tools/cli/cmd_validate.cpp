@@ -40,6 +40,7 @@ struct ValidateOptions {
   std::optional<double> effort_scale;
   std::optional<int> hacd_triangles;
   std::optional<int> hull_vertices;
+  bool warmstart = false;
   int grasps = -1;
   int trials = 1;
   PerturbationParams perturbation;
@@ -99,6 +100,7 @@ void run_validate(const ValidateOptions& opt) {
   if (opt.concavity) params.decomposition.concavity = *opt.concavity;
   if (opt.hacd_triangles) params.decomposition.max_input_triangles = *opt.hacd_triangles;
   if (opt.hull_vertices) params.decomposition.max_hull_vertices = *opt.hull_vertices;
+  if (opt.warmstart) params.articulated_warmstarting = true;
   const SimTests tests = sim_tests_from_string(opt.tests);
 
   const bool progress = !opt.quiet;
@@ -224,6 +226,9 @@ void add_validate_command(CLI::App& app) {
                   "default " +
                       std::to_string(defaults.decomposition.max_hull_vertices) + ")")
       ->check(CLI::Range(4, 100000));
+  cmd->add_flag("--warmstart", opt->warmstart,
+                "Warm-start the hand's contact impulses from the previous step (Bullet's "
+                "articulated warmstarting)");
   cmd->add_option("--grasps", opt->grasps, "Validate only the first K grasps of the plan");
   cmd->add_option("--trials", opt->trials,
                   "Simulate each grasp N times: as planned, then with the hand moved by "

@@ -45,6 +45,7 @@ nlohmann::json sim_params_to_json(const SimParams& p) {
       {"linear_slop_m", p.linear_slop_m},
       {"gear_erp", p.gear_erp},
       {"cone_friction", p.cone_friction},
+      {"articulated_warmstarting", p.articulated_warmstarting},
       {"density_kgm3", p.density_kgm3},
       {"mass_kg", p.mass_kg ? nlohmann::json(*p.mass_kg) : nlohmann::json(nullptr)},
       {"object_shape", to_string(p.object_shape)},

@@ -80,6 +80,9 @@ struct SimParams {
   double solver_residual_threshold = 0.0;
   /// Friction as Bullet's implicit cone (true) or the two-direction pyramid (false).
   bool cone_friction = true;
+  /// Start each step's solve of multibody contacts from the previous step's impulses
+  /// (Bullet SOLVER_USE_ARTICULATED_WARMSTARTING, factor 0.85); off in Bullet by default.
+  bool articulated_warmstarting = false;
 
   // --- Object ------------------------------------------------------------------------------
   /// Density of the object [kg/m³]: mass = density × closed volume (convex-hull volume for
