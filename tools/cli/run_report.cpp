@@ -17,6 +17,7 @@ std::string outcome_text(const SimResult& r) {
       text += " in " + p.name + (p.detail.empty() ? "" : " (" + p.detail + ")");
       break;
     }
+  if (r.preshape_overlap) text += "; the preshape hand overlaps the collision shape";
   return text;
 }
 
