@@ -46,6 +46,7 @@ for hand in "${HANDS[@]}"; do
   case "$hand" in panda_hand|parallel_gripper) extra=(--soft-finger-radius "$SOFT_FINGER") ;; esac
   for set in shipped kit ycb; do
     held=0; total=0; no_plan=0; trials_held=0; trials_total=0
+    failed=(0 0 0 0 0 0)   # not held in settle, close, lift, shake, gravity6; preshape overlaps
     for obj in ${SETS[$set]}; do
       name="$(basename "$obj" .obj)"
       base="$OUT/$hand/$set/$name"
@@ -65,6 +66,10 @@ for hand in "${HANDS[@]}"; do
       line="$(grep '^held [0-9]* / ' "$base.sim.txt")"   # "held k / n (...)"
       k="$(echo "$line" | awk '{print $2}')"; n="$(echo "$line" | awk '{print $4}')"
       held=$((held + k)); total=$((total + n))
+      # "not held by phase: settle 0, close 2, lift 1, shake 0, gravity6 0; preshape overlaps 1"
+      mapfile -t counts < <(grep '^not held by phase:' "$base.sim.txt" |
+          grep -oE '(settle|close|lift|shake|gravity6|overlaps) [0-9]+' | awk '{print $2}')
+      for i in "${!counts[@]}"; do failed[i]=$((failed[i] + counts[i])); done
       if [ "$TRIALS" -gt 1 ]; then   # "held in k / n trials of all grasps"
         t="$(tail -n 1 "$base.sim.txt")"
         trials_held=$((trials_held + $(echo "$t" | awk '{print $3}')))
@@ -74,7 +79,7 @@ for hand in "${HANDS[@]}"; do
     done
     trials_text=""
     [ "$TRIALS" -gt 1 ] && trials_text=", held in $trials_held / $trials_total trials"
-    summary+=("$hand $set: held $held / $total force-closure grasps$trials_text ($no_plan objects without a plan)")
+    summary+=("$hand $set: held $held / $total force-closure grasps$trials_text ($no_plan objects without a plan); not held in close ${failed[1]}, lift ${failed[2]}, shake ${failed[3]}, settle ${failed[0]}; preshape overlaps ${failed[5]}")
   done
 done
 printf '%s\n' "${summary[@]}" | tee "$OUT/summary.txt"

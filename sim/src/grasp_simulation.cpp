@@ -81,6 +81,12 @@ const PhaseResult* SimResult::phase(const std::string& name) const {
   return nullptr;
 }
 
+const PhaseResult* SimResult::failed_phase() const {
+  for (const PhaseResult& p : phases)
+    if (p.outcome != Outcome::kHeld && p.outcome != Outcome::kNotRun) return &p;
+  return nullptr;
+}
+
 struct GraspSimulation::Impl {
   HandModel hand;
   Grasp grasp;

@@ -124,7 +124,8 @@ TEST_F(ValidateCli, WritesSimJsonAndOneLinePerGraspAndATotal) {
   EXPECT_EQ(g["outcome"], "held");
   EXPECT_TRUE(g["failed_phase"].is_null());
   EXPECT_FALSE(g["preshape_overlap"].get<bool>());
-  EXPECT_EQ(r.output.find("overlaps"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("overlaps the object"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("preshape overlaps 0"), std::string::npos) << r.output;
   std::vector<std::string> phases;
   for (const auto& p : g["phases"]) phases.push_back(p["name"]);
   EXPECT_EQ(phases, (std::vector<std::string>{"settle", "close", "lift", "shake"}));
@@ -144,6 +145,15 @@ TEST_F(ValidateCli, MuOverrideOfZeroDropsEveryGrasp) {
   const nlohmann::json sim = read_out();
   EXPECT_EQ(sim["parameters"]["mu"], 0.0);
   EXPECT_EQ(sim["grasps"][0]["outcome"], "dropped");
+  // The failure is counted under the phase that failed, in the summary and on stdout.
+  const std::string failed = sim["grasps"][0]["failed_phase"];
+  EXPECT_EQ(sim["summary"]["not_held_by_phase"][failed], 1);
+  int failures = 0;
+  for (const auto& [phase, count] : sim["summary"]["not_held_by_phase"].items())
+    failures += count.get<int>();
+  EXPECT_EQ(failures, 1);
+  EXPECT_NE(r.output.find("not held by phase: settle "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(failed + " 1"), std::string::npos) << r.output;
 }
 
 TEST_F(ValidateCli, CompliantContactsAndTheTimeStepAreOptionsRecordedInSimJson) {
@@ -259,6 +269,34 @@ TEST_F(ValidateCli, UnknownTestOrMissingPlanIsAnError) {
                     out_path());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("missing.json"), std::string::npos) << r.output;
+}
+
+TEST(FailuresLine, CountsEachGraspThatDidNotHoldUnderItsFirstFailedPhase) {
+  auto result = [](std::vector<std::pair<std::string, Outcome>> phases, bool overlap) {
+    SimResult r;
+    r.outcome = Outcome::kHeld;
+    for (const auto& [name, outcome] : phases) {
+      PhaseResult p;
+      p.name = name;
+      p.outcome = outcome;
+      r.phases.push_back(p);
+      if (outcome != Outcome::kHeld && outcome != Outcome::kNotRun && r.held()) r.outcome = outcome;
+    }
+    r.preshape_overlap = overlap;
+    return r;
+  };
+  const std::vector<SimResult> results = {
+      result({{"settle", Outcome::kHeld}, {"close", Outcome::kDropped}, {"lift", Outcome::kNotRun}},
+             true),
+      result({{"settle", Outcome::kHeld}, {"close", Outcome::kHeld}, {"lift", Outcome::kSlipped},
+              {"shake", Outcome::kNotRun}},
+             false),
+      result({{"settle", Outcome::kHeld}, {"close", Outcome::kHeld}, {"lift", Outcome::kHeld}},
+             false),
+      result({{"settle", Outcome::kHeld}, {"close", Outcome::kDropped}}, false)};
+  EXPECT_EQ(cli::failures_line(results),
+            "not held by phase: settle 0, close 2, lift 1, shake 0, gravity6 0; preshape "
+            "overlaps 1");
 }
 
 TEST(SimResultLine, SaysHowFarSettlePushedTheObjectWhenThePreshapeHandOverlapsIt) {

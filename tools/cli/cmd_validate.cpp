@@ -158,6 +158,7 @@ void run_validate(const ValidateOptions& opt) {
   std::printf("held %d / %d (tests %s, mu %.3g) -> %s\n", held,
               static_cast<int>(doc.results.size()), opt.tests.c_str(), params.contact.mu,
               opt.out.c_str());
+  std::printf("%s\n", failures_line(doc.results).c_str());
   if (!doc.trial_outcomes.empty()) {
     std::vector<Outcome> all;
     for (const auto& t : doc.trial_outcomes) all.insert(all.end(), t.begin(), t.end());

@@ -98,7 +98,6 @@ nlohmann::json sim_params_to_json(const SimParams& p) {
 
 nlohmann::json sim_result_to_json(const SimResult& r, const HandModel& hand) {
   nlohmann::json phases = nlohmann::json::array();
-  const PhaseResult* failed = nullptr;
   for (const PhaseResult& p : r.phases) {
     nlohmann::json efforts = nlohmann::json::object();
     for (size_t j = 0; j < p.joint_efforts.size() && j < hand.joints.size(); ++j)
@@ -117,8 +116,8 @@ nlohmann::json sim_result_to_json(const SimResult& r, const HandModel& hand) {
                       {"sim_time_s", p.sim_time_s},
                       {"wall_time_s", p.wall_time_s},
                       {"steps", p.steps}});
-    if (!failed && p.outcome != Outcome::kHeld && p.outcome != Outcome::kNotRun) failed = &p;
   }
+  const PhaseResult* failed = r.failed_phase();
   return {{"outcome", to_string(r.outcome)},
           {"failed_phase", failed ? nlohmann::json(failed->name) : nlohmann::json(nullptr)},
           {"detail", failed ? failed->detail : std::string()},
@@ -168,6 +167,9 @@ nlohmann::json sim_to_json(const SimDocument& doc, const HandModel& hand) {
               {"principal_inertia_kgm2", to_json(o.principal_inertia_kgm2)},
               {"decomposition_s", o.decomposition_s}};
   }
+  const FailureCounts failures = count_failures(doc.results);
+  nlohmann::json not_held_by_phase = nlohmann::json::object();
+  for (const auto& [name, count] : failures.by_phase) not_held_by_phase[name] = count;
   nlohmann::json params = sim_params_to_json(doc.params);
   params["tests"] = to_string(doc.tests);
   const bool repeated = !doc.trial_outcomes.empty();
@@ -193,6 +195,8 @@ nlohmann::json sim_to_json(const SimDocument& doc, const HandModel& hand) {
            {{"grasps", static_cast<int>(doc.results.size())},
             {"held", held},
             {"outcomes", outcomes},
+            {"not_held_by_phase", not_held_by_phase},
+            {"preshape_overlaps", failures.preshape_overlaps},
             {"wall_time_s", doc.wall_time_s},
             {"trials", repeated ? nlohmann::json(total_trials) : nlohmann::json(nullptr)},
             {"held_trials", repeated ? nlohmann::json(held_trials) : nlohmann::json(nullptr)}}}};
@@ -283,6 +287,28 @@ int count_held(const std::vector<Outcome>& outcomes) {
 std::string trials_line(const std::vector<Outcome>& outcomes) {
   return "held in " + std::to_string(count_held(outcomes)) + " / " +
          std::to_string(outcomes.size()) + " trials";
+}
+
+FailureCounts count_failures(const std::vector<SimResult>& results) {
+  FailureCounts counts;
+  for (const char* name : {"settle", "close", "lift", "shake", "gravity6"})
+    counts.by_phase.emplace_back(name, 0);
+  for (const SimResult& r : results) {
+    counts.preshape_overlaps += r.preshape_overlap;
+    if (const PhaseResult* failed = r.held() ? nullptr : r.failed_phase())
+      for (auto& [name, count] : counts.by_phase)
+        if (name == failed->name) ++count;
+  }
+  return counts;
+}
+
+std::string failures_line(const std::vector<SimResult>& results) {
+  const FailureCounts counts = count_failures(results);
+  std::string line = "not held by phase:";
+  for (size_t i = 0; i < counts.by_phase.size(); ++i)
+    line += (i ? ", " : " ") + counts.by_phase[i].first + " " +
+            std::to_string(counts.by_phase[i].second);
+  return line + "; preshape overlaps " + std::to_string(counts.preshape_overlaps);
 }
 
 std::string sim_result_line(const SimResult& r) {

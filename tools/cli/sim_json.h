@@ -24,6 +24,7 @@
 #include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cordgrasp/core/grasp_perturbation.h"
@@ -102,5 +103,16 @@ std::string trials_line(const std::vector<Outcome>& outcomes);
 
 /// "held (lift held, shake held, gravity6 held) mass 0.12 kg, 0.41 s"
 std::string sim_result_line(const SimResult& result);
+
+/// Grasps that did not hold, by the first phase that failed (settle, close, lift, shake,
+/// gravity6, in that order), and grasps whose preshape hand overlapped the object.
+struct FailureCounts {
+  std::vector<std::pair<std::string, int>> by_phase;
+  int preshape_overlaps = 0;
+};
+FailureCounts count_failures(const std::vector<SimResult>& results);
+
+/// "not held by phase: settle 0, close 2, lift 1, shake 0, gravity6 0; preshape overlaps 1"
+std::string failures_line(const std::vector<SimResult>& results);
 
 }  // namespace cordgrasp::cli

@@ -71,6 +71,8 @@ struct SimResult {
   bool held() const { return outcome == Outcome::kHeld; }
   /// The phase called `name`, or nullptr.
   const PhaseResult* phase(const std::string& name) const;
+  /// The first phase that ran and did not hold, or nullptr.
+  const PhaseResult* failed_phase() const;
 };
 
 }  // namespace cordgrasp
