@@ -109,6 +109,7 @@ void BM_SolverSahMug(benchmark::State& state) {
 }
 BENCHMARK(BM_SolverSahMug)
     ->ArgNames({"hull_vertices", "iterations", "warmstart"})
+    ->Args({64, 50, 0})
     ->Args({64, 20, 0})
     ->Args({64, 20, 1})
     ->Args({32, 20, 0})

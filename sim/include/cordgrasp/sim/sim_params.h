@@ -51,9 +51,11 @@ struct SimParams {
   /// cordgrasp_sah (110–114 / 132) but not for schunk_sah (54 / 88, fingers slip): not used.
   /// Outcomes of marginal grasps are chaotic: a 1e-15 s change of the step flips 17 of 132.
   double time_step_s = 1.0 / 960.0;
-  /// Sequential-impulse iterations per step: at 1/960 s the 5 kg box starts to hold at an
-  /// effort scale of 0.65 with 20, 30 or 50 iterations, 0.70 with 10 (Coulomb: 0.61).
-  int solver_iterations = 20;
+  /// Sequential-impulse iterations per step. Against the 1/1920 s, 50-iteration reference 50
+  /// agree on 119 / 132 cordgrasp_sah, 76 / 88 schunk_sah and 40 / 47 panda_hand grasps, 20
+  /// on 108–109, 68 and 29: with 20 the panda's pads lose their torsion (docs/physics.md).
+  /// The 5 kg box starts to hold at an effort scale of 0.65 with 20, 30 or 50 (Coulomb 0.61).
+  int solver_iterations = 50;
   /// Error reduction of contacts and joint constraints (Bullet erp, erp2) [0..1].
   double erp = 0.2;
   /// Contact stiffness of finger–object contacts [N/m] (0: rigid contacts with erp/cfm).
