@@ -46,9 +46,10 @@ struct SimParams {
 
   // --- Integration and solver ------------------------------------------------------------
   /// Fixed time step [s] (docs/physics.md). Lift + shake outcomes against a 1/1920 s,
-  /// 50-iteration reference: cordgrasp_sah 108–109 / 132 grasps agree, schunk_sah 68 / 88
-  /// (rigid contacts). Compliant contacts at 1/480 s cost half as much and agree as well for
-  /// cordgrasp_sah (110–114 / 132) but not for schunk_sah (54 / 88, fingers slip): not used.
+  /// 50-iteration reference, both with 20 iterations: cordgrasp_sah 108–109 / 132 grasps
+  /// agree, schunk_sah 68 / 88 (rigid contacts). Compliant contacts at 1/480 s cost half as
+  /// much and agree as well for cordgrasp_sah (110–114 / 132) but not for schunk_sah (54 / 88,
+  /// fingers slip): not used.
   /// Outcomes of marginal grasps are chaotic: a 1e-15 s change of the step flips 17 of 132.
   double time_step_s = 1.0 / 960.0;
   /// Sequential-impulse iterations per step. Against the 1/1920 s, 50-iteration reference 50
