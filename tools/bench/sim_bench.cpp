@@ -63,20 +63,21 @@ void validate_benchmark(benchmark::State& state, const HandModel& hand, const Me
   state.counters["triangles"] = static_cast<double>(mesh.triangles.size());
 }
 
-/// The default hand on the shipped mug (2976 triangles, HACD decomposition).
-void BM_ValidateSahMug(benchmark::State& state) {
+/// validate_benchmark() of the default hand on the shipped mug (2976 triangles, HACD parts).
+void validate_sah_mug(benchmark::State& state, const SimParams& params) {
   static const HandModel hand = load_hand("cordgrasp_sah");
   static const Mesh mesh = make_object_mesh("mug");
-  validate_benchmark(state, hand, mesh, SimParams{});
+  validate_benchmark(state, hand, mesh, params);
 }
+
+/// The default hand on the shipped mug at the default parameters.
+void BM_ValidateSahMug(benchmark::State& state) { validate_sah_mug(state, SimParams{}); }
 BENCHMARK(BM_ValidateSahMug)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 /// Time step, solver iterations and contact model against speed (docs/physics.md): the
 /// default hand on the shipped mug at 1/arg0 s with arg1 iterations, compliant contacts
 /// (2e5 N/m, 400 N·s/m) when arg2 is 1, else the default rigid ones (filter: SimStep).
 void BM_SimStepSahMug(benchmark::State& state) {
-  static const HandModel hand = load_hand("cordgrasp_sah");
-  static const Mesh mesh = make_object_mesh("mug");
   SimParams params;
   params.time_step_s = 1.0 / static_cast<double>(state.range(0));
   params.solver_iterations = static_cast<int>(state.range(1));
@@ -84,7 +85,7 @@ void BM_SimStepSahMug(benchmark::State& state) {
     params.contact_stiffness_Npm = 2e5;
     params.contact_damping_Nspm = 400.0;
   }
-  validate_benchmark(state, hand, mesh, params);
+  validate_sah_mug(state, params);
 }
 BENCHMARK(BM_SimStepSahMug)
     ->ArgNames({"per_s", "iterations", "compliant"})
@@ -99,13 +100,11 @@ BENCHMARK(BM_SimStepSahMug)
 /// shipped mug with part hulls of at most arg0 vertices, arg1 solver iterations and
 /// articulated warmstarting when arg2 is 1 (filter: SolverSahMug).
 void BM_SolverSahMug(benchmark::State& state) {
-  static const HandModel hand = load_hand("cordgrasp_sah");
-  static const Mesh mesh = make_object_mesh("mug");
   SimParams params;
   params.decomposition.max_hull_vertices = static_cast<int>(state.range(0));
   params.solver_iterations = static_cast<int>(state.range(1));
   params.articulated_warmstarting = state.range(2) == 1;
-  validate_benchmark(state, hand, mesh, params);
+  validate_sah_mug(state, params);
 }
 BENCHMARK(BM_SolverSahMug)
     ->ArgNames({"hull_vertices", "iterations", "warmstart"})
