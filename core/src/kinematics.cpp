@@ -77,4 +77,48 @@ Eigen::Isometry3d root_pose_for_gcp(const HandModel& hand, const Eigen::VectorXd
   return X_WG * X_BG.inverse();
 }
 
+Eigen::VectorXd contact_force_torques(const HandModel& hand, const Eigen::VectorXd& q,
+                                      const Eigen::Isometry3d& X_OB,
+                                      const std::vector<Contact>& contacts,
+                                      const std::vector<Eigen::Vector3d>& forces_O) {
+  check_size(hand, q, "contact_force_torques");
+  if (forces_O.size() != contacts.size())
+    throw std::invalid_argument("contact_force_torques: " + std::to_string(forces_O.size()) +
+                                " forces for " + std::to_string(contacts.size()) + " contacts");
+  const std::vector<Eigen::Isometry3d> X_OL = link_poses(hand, apply_couplings(hand, q), X_OB);
+  Eigen::VectorXd tau = Eigen::VectorXd::Zero(q.size());
+  for (size_t k = 0; k < contacts.size(); ++k) {
+    const Contact& c = contacts[k];
+    if (c.link < 0 || c.link >= static_cast<int>(hand.links.size()))
+      throw std::invalid_argument("contact_force_torques: contact on link " +
+                                  std::to_string(c.link) + ", hand '" + hand.name + "' has " +
+                                  std::to_string(hand.links.size()) + " links");
+    const Eigen::Vector3d& force = forces_O[k];
+    for (int j = hand.links[c.link].parent_joint; j >= 0;
+         j = hand.links[hand.joints[j].parent_link].parent_joint) {
+      const Joint& joint = hand.joints[j];
+      const Eigen::Isometry3d X_OJ = X_OL[joint.parent_link] * joint.X_PJ;
+      const Eigen::Vector3d axis = X_OJ.linear() * joint.axis;
+      switch (joint.type) {
+        case JointType::kRevolute:
+        case JointType::kContinuous:
+          tau[j] += axis.dot((c.p_O - X_OJ.translation()).cross(force));
+          break;
+        case JointType::kPrismatic:
+          tau[j] += axis.dot(force);
+          break;
+        case JointType::kFixed:
+          break;
+      }
+    }
+  }
+  for (size_t j = 0; j < hand.joints.size(); ++j) {
+    const auto& m = hand.joints[j].mimic;
+    if (!m) continue;
+    tau[m->master_joint] += m->multiplier * tau[static_cast<Eigen::Index>(j)];
+    tau[static_cast<Eigen::Index>(j)] = 0.0;
+  }
+  return tau;
+}
+
 }  // namespace cordgrasp

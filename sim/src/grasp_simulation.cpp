@@ -3,9 +3,10 @@
 #include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 
-
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "cordgrasp/core/kinematics.h"
@@ -22,6 +23,10 @@ using bullet::to_bt;
 
 constexpr int kObjectGroup = 1;
 constexpr int kHandGroup = 2;
+
+/// Joint torque per newton of contact force below which a joint does not press a contact
+/// (a lever of 1 µm) [N·m/N].
+constexpr double kNegligibleTorquePerNewton = 1e-6;
 
 double angle_of(const Eigen::Matrix3d& R) { return Eigen::AngleAxisd(R).angle(); }
 
@@ -138,6 +143,9 @@ struct GraspSimulation::Impl {
   void step(const Eigen::Isometry3d& X_WB_next);
   void contacts(int& count, double& max_penetration) const;
   bool unstable() const;
+  /// Squeeze effort of every actor joint [N·m or N], signed (+: toward larger q); 0: holds
+  /// the plan (SimParams::squeeze_direction).
+  Eigen::VectorXd squeeze_efforts() const;
   /// Starts phase `name` (its wall clock too) with gravity `g_W` [m/s²].
   void begin(PhaseResult& r, const std::string& name, const Eigen::Vector3d& g_W);
   /// Sets the world's gravity [m/s²].
@@ -454,6 +462,29 @@ PhaseResult GraspSimulation::settle() {
   return r;
 }
 
+Eigen::VectorXd GraspSimulation::Impl::squeeze_efforts() const {
+  Eigen::VectorXd push = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(hand.joints.size()));
+  if (params.squeeze_direction == SqueezeDirection::kActor) {
+    for (size_t a = 0; a < actor_joints.size(); ++a)
+      push[actor_joints[a]] =
+          actor_sign[a] * hand_body->effort_limit[static_cast<size_t>(actor_joints[a])];
+    return push;
+  }
+  // Contact normals: τ = f·Σ Jᵀ(−n), with the largest common force f that no actor joint's
+  // effort limit caps.
+  std::vector<Eigen::Vector3d> forces;
+  for (const Contact& c : grasp.contacts) forces.push_back(-c.n_O);
+  const Eigen::VectorXd tau = contact_force_torques(hand, grasp.q, grasp.X_OB, grasp.contacts, forces);
+  double force = std::numeric_limits<double>::infinity();
+  for (const int j : actor_joints)
+    if (std::abs(tau[j]) > kNegligibleTorquePerNewton)
+      force = std::min(force, hand_body->effort_limit[static_cast<size_t>(j)] / std::abs(tau[j]));
+  if (!std::isfinite(force)) return push;  // no contact on a finger: nothing to press
+  for (const int j : actor_joints)
+    if (std::abs(tau[j]) > kNegligibleTorquePerNewton) push[j] = force * tau[j];
+  return push;
+}
+
 PhaseResult GraspSimulation::close() {
   Impl& s = *impl_;
   PhaseResult r;
@@ -488,20 +519,21 @@ PhaseResult GraspSimulation::close() {
     s.step(X_WB0);
   }
   s.qd_feedforward.setZero();
-  // Squeeze: every actor joint becomes a spring with its rest point `squeeze` past the plan
-  // (not clamped: the joint limits stop the finger) and stiffness effort / squeeze, so it pushes
-  // with its full effort limit at the planned value and keeps pushing if the object gives way;
-  // the other joints hold the plan.
+  // Squeeze: every pushing actor joint becomes a spring with its rest point `squeeze` past the
+  // plan in the direction it pushes (not clamped: the joint limits stop the finger) and
+  // stiffness effort / squeeze, so it pushes with its squeeze effort at the planned value and
+  // keeps pushing if the object gives way; the other joints hold the plan.
   s.q_target = s.grasp.q;
   s.speed_cap = close_cap;
+  const Eigen::VectorXd push = s.squeeze_efforts();
   for (size_t a = 0; a < s.actor_joints.size(); ++a) {
     const int j = s.actor_joints[a];
+    if (push[j] == 0.0) continue;  // holds the plan
     const Joint& joint = s.hand.joints[static_cast<size_t>(j)];
     const double squeeze =
         joint.type == JointType::kPrismatic ? s.params.squeeze_m : s.params.squeeze_rad;
-    s.q_target[j] = s.grasp.q[j] + s.actor_sign[a] * squeeze;
-    if (s.params.compliant_squeeze)
-      s.spring_gain[j] = s.hand_body->effort_limit[static_cast<size_t>(j)] / squeeze;
+    s.q_target[j] = s.grasp.q[j] + (push[j] > 0.0 ? squeeze : -squeeze);
+    if (s.params.compliant_squeeze) s.spring_gain[j] = std::abs(push[j]) / squeeze;
   }
   const int max_steps = static_cast<int>(std::lround(s.params.squeeze_max_time_s / s.dt));
   const int min_steps = static_cast<int>(std::lround(s.params.squeeze_min_time_s / s.dt));

@@ -24,6 +24,20 @@ ObjectShape object_shape_from_string(const std::string& text) {
                               "' is not one of auto, hull, decomposition, gimpact");
 }
 
+const char* to_string(SqueezeDirection direction) {
+  switch (direction) {
+    case SqueezeDirection::kActor: return "actor";
+    case SqueezeDirection::kContactNormals: return "contacts";
+  }
+  return "?";
+}
+
+SqueezeDirection squeeze_direction_from_string(const std::string& text) {
+  for (SqueezeDirection d : {SqueezeDirection::kActor, SqueezeDirection::kContactNormals})
+    if (text == to_string(d)) return d;
+  throw std::invalid_argument("squeeze direction '" + text + "' is not one of actor, contacts");
+}
+
 SimTests sim_tests_from_string(const std::string& text) {
   SimTests t{false, false, false};
   std::stringstream in(text);

@@ -189,6 +189,21 @@ TEST_F(ValidateCli, WarmstartAndHullVerticesAreOptionsRecordedInSimJson) {
   EXPECT_EQ(sim["grasps"][0]["outcome"], "held");
 }
 
+TEST_F(ValidateCli, ContactSqueezeIsRecordedAndPressesNothingWhenThePlanHasNoContacts) {
+  const auto r = run_cordgrasp("validate --plan " + plan_path() +
+                               " --tests lift --grasps 1 -q --squeeze-direction contacts --out " +
+                               out_path());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json sim = read_out();
+  EXPECT_EQ(sim["parameters"]["squeeze_direction"], "contacts");
+  // This plan lists no contacts: the pads hold the plan on the faces without squeezing.
+  EXPECT_NE(sim["grasps"][0]["outcome"], "held");
+}
+
+TEST_F(ValidateCli, UnknownSqueezeDirectionIsAnError) {
+  expect_error("--squeeze-direction normals", "squeeze-direction");
+}
+
 TEST_F(ValidateCli, HullsOfFewerThanFourVerticesAreAnError) {
   expect_error("--hull-vertices 3", "hull-vertices");
 }

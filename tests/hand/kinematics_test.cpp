@@ -1,10 +1,13 @@
-// apply_couplings, clamp_to_limits, link_poses, root_pose_for_gcp on the shipped and test hands.
+// apply_couplings, clamp_to_limits, link_poses, root_pose_for_gcp, contact_force_torques
+// on the shipped and test hands.
 #include "cordgrasp/core/kinematics.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "cordgrasp/core/hand_io.h"
 #include "test_paths.h"
@@ -107,6 +110,75 @@ TEST(Kinematics, RevoluteJointRotatesItsChildAboutTheAxis) {
   const Eigen::AngleAxisd aa(dR);
   EXPECT_NEAR(aa.angle(), 0.5, 1e-12);
   EXPECT_TRUE(aa.axis().isApprox(X_WJ.linear() * joint.axis, 1e-9));
+}
+
+/// Virtual work Σ p_c(q)·f_c of forces at contacts that ride on their links, the contacts
+/// given at q0 (couplings applied to both).
+double contact_work(const HandModel& h, const Eigen::VectorXd& q0, const Eigen::VectorXd& q,
+                    const Eigen::Isometry3d& X_OB, const std::vector<Contact>& contacts,
+                    const std::vector<Eigen::Vector3d>& forces) {
+  const auto X0 = link_poses(h, apply_couplings(h, q0), X_OB);
+  const auto X1 = link_poses(h, apply_couplings(h, q), X_OB);
+  double work = 0.0;
+  for (size_t k = 0; k < contacts.size(); ++k)
+    work += (X1[contacts[k].link] * (X0[contacts[k].link].inverse() * contacts[k].p_O))
+                .dot(forces[k]);
+  return work;
+}
+
+TEST(ContactForceTorques, EqualTheVirtualWorkOfTheContactForcesPooledOntoMasters) {
+  for (const std::string& name :
+       {std::string("cordgrasp_sah"), test::test_data("hands/features/features.yaml")}) {
+    SCOPED_TRACE(name);
+    const HandModel h = load_hand(name);
+    Eigen::VectorXd q = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(h.joints.size()));
+    for (size_t j = 0; j < h.joints.size(); ++j)
+      if (h.joints[j].type == JointType::kRevolute || h.joints[j].type == JointType::kPrismatic)
+        q[j] = 0.3 * h.joints[j].lower + 0.7 * h.joints[j].upper;
+    Eigen::Isometry3d X_OB = Eigen::Isometry3d::Identity();
+    X_OB.rotate(Eigen::AngleAxisd(0.9, Eigen::Vector3d(-1, 2, 0.5).normalized()));
+    X_OB.pretranslate(Eigen::Vector3d(0.02, -0.07, 0.11));
+    // One contact on every link below a moving joint, off the link origin, forces all different.
+    const auto X_OL = link_poses(h, apply_couplings(h, q), X_OB);
+    std::vector<Contact> contacts;
+    std::vector<Eigen::Vector3d> forces;
+    for (size_t l = 0; l < h.links.size(); ++l) {
+      const int j = h.links[l].parent_joint;
+      if (j < 0 || !h.joints[j].is_moving()) continue;
+      const double k = static_cast<double>(contacts.size());
+      Contact c;
+      c.link = static_cast<int>(l);
+      c.p_O = X_OL[l] * Eigen::Vector3d(0.01, 0.004 * k, -0.006);
+      contacts.push_back(c);
+      forces.push_back(Eigen::Vector3d(std::cos(k), std::sin(k), 0.5) * (1.0 + k));
+    }
+    ASSERT_GE(contacts.size(), 2u);
+    const Eigen::VectorXd tau = contact_force_torques(h, q, X_OB, contacts, forces);
+    constexpr double kStep = 1e-6;
+    for (size_t j = 0; j < h.joints.size(); ++j) {
+      if (h.joints[j].mimic || !h.joints[j].is_moving()) {
+        EXPECT_EQ(tau[j], 0.0) << h.joints[j].name;
+        continue;
+      }
+      Eigen::VectorXd qp = q, qm = q;
+      qp[j] += kStep;
+      qm[j] -= kStep;
+      const double dwork = (contact_work(h, q, qp, X_OB, contacts, forces) -
+                            contact_work(h, q, qm, X_OB, contacts, forces)) / (2.0 * kStep);
+      EXPECT_NEAR(tau[j], dwork, 1e-6) << h.joints[j].name;
+    }
+  }
+}
+
+TEST(ContactForceTorques, ContactOnAnUnknownLinkOrAMissingForceThrows) {
+  const HandModel h = load_hand("cordgrasp_sah");
+  Contact c;
+  c.link = static_cast<int>(h.links.size());
+  const Eigen::Isometry3d I = Eigen::Isometry3d::Identity();
+  EXPECT_THROW(contact_force_torques(h, h.preshape, I, {c}, {Eigen::Vector3d::UnitX()}),
+               std::invalid_argument);
+  c.link = h.root_link;
+  EXPECT_THROW(contact_force_torques(h, h.preshape, I, {c}, {}), std::invalid_argument);
 }
 
 }  // namespace

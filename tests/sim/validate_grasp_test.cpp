@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "cordgrasp/core/hand_io.h"
+#include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/shapes.h"
 #include "sim_test_util.h"
 
@@ -70,6 +71,43 @@ TEST(ValidateGrasp, ParallelGripperPinchingABoxAtItsCentreHoldsThroughEveryTest)
   const int j = find_joint(gripper(), "left_finger_joint");
   EXPECT_LT(lift.joint_efforts[static_cast<size_t>(j)], -1.0);
   EXPECT_NEAR(r.object.mass_kg, SimParams{}.density_kgm3 * std::pow(kBoxSide_m, 3), 1e-12);
+}
+
+/// The centre pinch with its planned contacts: each pad on the box face it faces.
+Grasp centre_pinch_with_contacts() {
+  Grasp g = centre_pinch();
+  const auto X_OL = link_poses(gripper(), g.q, g.X_OB);
+  for (const Joint& joint : gripper().joints) {
+    if (joint.type != JointType::kPrismatic) continue;
+    const double side = X_OL[static_cast<size_t>(joint.child_link)].translation().x() > 0.0 ? 1.0 : -1.0;
+    Contact c;
+    c.link = joint.child_link;
+    c.p_O = Eigen::Vector3d(side * 0.5 * kBoxSide_m, 0, 0);
+    c.n_O = Eigen::Vector3d(side, 0, 0);
+    g.contacts.push_back(c);
+  }
+  return g;
+}
+
+TEST(ValidateGrasp, ContactSqueezePressesThePlannedContactsOnly) {
+  SimParams params = gripper_params();
+  params.squeeze_direction = SqueezeDirection::kContactNormals;
+  const SimTests lift_only{true, false, false};
+  const Grasp pinch = centre_pinch_with_contacts();
+  ASSERT_EQ(pinch.contacts.size(), 2u);
+  const SimResult r = validate_grasp(box(), gripper(), pinch, params, lift_only);
+  EXPECT_EQ(r.outcome, Outcome::kHeld);
+  const int j = find_joint(gripper(), "left_finger_joint");
+  const PhaseResult* lift = r.phase("lift");
+  ASSERT_NE(lift, nullptr);
+  EXPECT_LT(lift->joint_efforts[static_cast<size_t>(j)], -1.0);
+  // Without planned contacts there is nothing to press: the pads hold the plan, touching the
+  // faces without squeezing them, and the box is not lifted.
+  Grasp bare = pinch;
+  bare.contacts.clear();
+  const SimResult b = validate_grasp(box(), gripper(), bare, params, lift_only);
+  EXPECT_NE(b.outcome, Outcome::kHeld);
+  EXPECT_NE(b.outcome, Outcome::kUnstable);
 }
 
 TEST(ValidateGrasp, FlagsAPreshapeHandPlacedIntoTheObject) {
@@ -209,6 +247,12 @@ TEST(ObjectShapeFromString, RoundTripsEveryShape) {
                         ObjectShape::kGImpact})
     EXPECT_EQ(object_shape_from_string(to_string(s)), s);
   EXPECT_THROW(object_shape_from_string("vhacd"), std::invalid_argument);
+}
+
+TEST(SqueezeDirectionFromString, RoundTripsEveryDirection) {
+  for (SqueezeDirection d : {SqueezeDirection::kActor, SqueezeDirection::kContactNormals})
+    EXPECT_EQ(squeeze_direction_from_string(to_string(d)), d);
+  EXPECT_THROW(squeeze_direction_from_string("normals"), std::invalid_argument);
 }
 
 }  // namespace

@@ -37,6 +37,7 @@ struct ValidateOptions {
   std::optional<double> contact_damping_Nspm;
   std::optional<double> concavity;
   std::optional<double> squeeze_rad;
+  std::string squeeze_direction;
   std::optional<double> effort_scale;
   std::optional<int> hacd_triangles;
   std::optional<int> hull_vertices;
@@ -96,6 +97,8 @@ void run_validate(const ValidateOptions& opt) {
   if (opt.contact_stiffness_Npm) params.contact_stiffness_Npm = *opt.contact_stiffness_Npm;
   if (opt.contact_damping_Nspm) params.contact_damping_Nspm = *opt.contact_damping_Nspm;
   if (opt.squeeze_rad) params.squeeze_rad = *opt.squeeze_rad;
+  if (!opt.squeeze_direction.empty())
+    params.squeeze_direction = squeeze_direction_from_string(opt.squeeze_direction);
   if (opt.effort_scale) params.effort_scale = *opt.effort_scale;
   if (opt.concavity) params.decomposition.concavity = *opt.concavity;
   if (opt.hacd_triangles) params.decomposition.max_input_triangles = *opt.hacd_triangles;
@@ -215,6 +218,12 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--squeeze", opt->squeeze_rad,
                   "Squeeze spring rest point past the planned joint values [rad] (default " +
                       format_number(defaults.squeeze_rad) + ")");
+  cmd->add_option("--squeeze-direction", opt->squeeze_direction,
+                  std::string("Squeeze: 'actor' (every finger joint closes with its full effort) or "
+                              "'contacts' (the joints press the planned contacts along their "
+                              "normals with one common force) (default ") +
+                      to_string(defaults.squeeze_direction) + ")")
+      ->check(CLI::IsMember({"actor", "contacts"}));
   cmd->add_option("--effort-scale", opt->effort_scale,
                   "Multiply every joint effort limit (e.g. 0.5 for weaker motors)");
   cmd->add_option("--concavity", opt->concavity,

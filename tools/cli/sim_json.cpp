@@ -62,6 +62,7 @@ nlohmann::json sim_params_to_json(const SimParams& p) {
       {"close_speed", p.close_speed},
       {"squeeze_rad", p.squeeze_rad},
       {"squeeze_m", p.squeeze_m},
+      {"squeeze_direction", to_string(p.squeeze_direction)},
       {"compliant_squeeze", p.compliant_squeeze},
       {"default_effort_Nm", p.default_effort_Nm},
       {"default_effort_N", p.default_effort_N},

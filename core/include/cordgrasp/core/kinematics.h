@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <vector>
 
+#include "cordgrasp/core/grasp.h"
 #include "cordgrasp/core/hand_model.h"
 
 namespace cordgrasp {
@@ -28,5 +29,17 @@ Eigen::Isometry3d gcp_pose(const HandModel& hand, const std::vector<Eigen::Isome
 /// Root pose X_WB that puts the GCP at X_WG for joint vector q.
 Eigen::Isometry3d root_pose_for_gcp(const HandModel& hand, const Eigen::VectorXd& q,
                                     const Eigen::Isometry3d& X_WG);
+
+/// Joint torques that make the hand exert force forces_O[c] (object frame, on the object) at
+/// every contact c, at joint vector q (couplings applied here), the root link at X_OB in the
+/// object frame: τ = Σ_c J_c(q)ᵀ·f_c over the joints upstream of each contact's link [N·m or N].
+/// A mimic joint's torque is pooled onto its master (× multiplier), as its drive is the
+/// master's; mimic entries are 0. Used by the physics squeeze (issue 5).
+/// @throws std::invalid_argument when q or forces_O have the wrong size or a contact names no
+/// link.
+Eigen::VectorXd contact_force_torques(const HandModel& hand, const Eigen::VectorXd& q,
+                                      const Eigen::Isometry3d& X_OB,
+                                      const std::vector<Contact>& contacts,
+                                      const std::vector<Eigen::Vector3d>& forces_O);
 
 }  // namespace cordgrasp

@@ -22,6 +22,21 @@ const char* to_string(ObjectShape shape);
 /// Parses the names of to_string(ObjectShape). @throws std::invalid_argument otherwise.
 ObjectShape object_shape_from_string(const std::string& text);
 
+/// Which way the squeeze pushes once the fingers have reached the plan (issue 5; docs/physics.md).
+enum class SqueezeDirection {
+  /// Every actor joint pushes toward closing with its full effort limit.
+  kActor,
+  /// The actor joints press the planned contacts along their normals with one common force,
+  /// as large as the weakest joint allows (τ = f·Σ Jᵀ(−n)); actors without a contact hold.
+  kContactNormals,
+};
+
+/// "actor", "contacts".
+const char* to_string(SqueezeDirection direction);
+
+/// Parses the names of to_string(SqueezeDirection). @throws std::invalid_argument otherwise.
+SqueezeDirection squeeze_direction_from_string(const std::string& text);
+
 /// Where the world frame W is put relative to the object frame O (gravity is always −z_W).
 enum class WorldFrame {
   /// W rotated so that the planned GCP approach axis (+z_G) points down (−z_W) and x_G = x_W:
@@ -121,6 +136,8 @@ struct SimParams {
   double default_effort_N = 50.0;
   /// Multiplies every effort limit (e.g. 0.1 for weak motors) [-].
   double effort_scale = 1.0;
+  /// Squeeze direction: actor closing directions, or the planned contacts' normals.
+  SqueezeDirection squeeze_direction = SqueezeDirection::kActor;
   /// Squeeze compliantly (the spring above); false: full effort until the joint reaches its
   /// rest point.
   bool compliant_squeeze = true;

@@ -65,8 +65,9 @@ class GraspSimulation {
   /// Settle: gravity off, preshape held, hand at the planned pose, object at rest.
   PhaseResult settle();
   /// Close: reach — all driven joints follow minimum-jerk paths from the preshape to the plan,
-  /// arriving together; squeeze — actor joints are driven past the plan with their effort
-  /// limits until they stall or squeeze_max_time_s, the others hold the plan. Sets the
+  /// arriving together; squeeze — actor joints are driven past the plan (in the actors'
+  /// closing directions, or so as to press the planned contacts: squeeze_direction) until they
+  /// stall or squeeze_max_time_s, the others hold the plan. Sets the
   /// reference pose of the object in the hand. No contact at the end = kDropped.
   PhaseResult close();
   /// Lift: gravity −z_W; the hand rises lift_height_m in lift_time_s, then holds lift_hold_s.
