@@ -12,7 +12,8 @@
 # contacts are never force closure), TRIALS (validate --trials: each grasp also simulated with
 # the hand nudged; held / not-held of marginal grasps is chaotic, docs/physics.md; default 1),
 # YCB_MASSES (1: the YCB objects get their measured masses, table below; 0: density × volume
-# like the other sets; default 1).
+# like the other sets; default 1), VALIDATE_ARGS (more `cordgrasp validate` options, split at
+# spaces, e.g. "--squeeze-direction contacts"; default none).
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 OUT="${1:-/tmp/cordgrasp_hold_rates}"
@@ -26,6 +27,7 @@ TIME_LIMIT="${TIME_LIMIT:-10}"
 SOFT_FINGER="${SOFT_FINGER:-0.005}"
 TRIALS="${TRIALS:-1}"
 YCB_MASSES="${YCB_MASSES:-1}"
+read -r -a VALIDATE_EXTRA <<< "${VALIDATE_ARGS:-}"
 # Measured masses of the YCB objects [kg], from the YCB object and model set (Calli et al.,
 # IEEE Robotics & Automation Magazine 2015). The default density × closed volume gets these
 # wrong by up to 7×: the pitcher's mesh is closed over its 2.5 l inside (1.27 kg at 500 kg/m³).
@@ -62,6 +64,7 @@ for hand in "${HANDS[@]}"; do
         mass=(--mass "${YCB_MASS[$name]}")
       fi
       "$CG" validate --plan "$base.plan.json" --tests lift,shake --trials "$TRIALS" --quiet "${mass[@]}" \
+          ${VALIDATE_EXTRA[@]+"${VALIDATE_EXTRA[@]}"} \
           --out "$base.sim.json" > "$base.sim.txt" 2>&1 || { echo "validate failed: $base"; continue; }
       line="$(grep '^held [0-9]* / ' "$base.sim.txt")"   # "held k / n (...)"
       k="$(echo "$line" | awk '{print $2}')"; n="$(echo "$line" | awk '{print $4}')"
