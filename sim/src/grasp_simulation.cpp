@@ -126,6 +126,7 @@ struct GraspSimulation::Impl {
   Eigen::Isometry3d X_BO_ref = Eigen::Isometry3d::Identity();  ///< object in hand root frame
   bool closed = false;
   PhaseHook segment_hook;
+  int trace_every = 0;  ///< steps between trace samples (SimParams::trace_interval_s); 0: off
 
   // Per-phase accumulators.
   PhaseResult* current = nullptr;
@@ -146,6 +147,8 @@ struct GraspSimulation::Impl {
   /// Squeeze effort of every actor joint [N·m or N], signed (+: toward larger q); 0: holds
   /// the plan (SimParams::squeeze_direction).
   Eigen::VectorXd squeeze_efforts() const;
+  /// Current world state labelled `phase` (GraspSimulation::snapshot).
+  PhaseSnapshot snapshot(const std::string& phase) const;
   /// Starts phase `name` (its wall clock too) with gravity `g_W` [m/s²].
   void begin(PhaseResult& r, const std::string& name, const Eigen::Vector3d& g_W);
   /// Sets the world's gravity [m/s²].
@@ -174,6 +177,8 @@ GraspSimulation::Impl::Impl(const Mesh& mesh, const HandModel& h, const Grasp& g
                                 std::to_string(grasp.q_preshape.size()) + " entries, hand '" +
                                 hand.name + "' has " + std::to_string(n) + " joints");
   if (!(dt > 0.0)) throw std::invalid_argument("validate_grasp: time_step_s must be positive");
+  if (params.trace_interval_s > 0.0)
+    trace_every = std::max(1, static_cast<int>(std::lround(params.trace_interval_s / dt)));
   grasp.q = clamp_to_limits(hand, apply_couplings(hand, grasp.q));
   grasp.q_preshape = clamp_to_limits(hand, apply_couplings(hand, grasp.q_preshape));
 
@@ -322,6 +327,26 @@ void GraspSimulation::Impl::step(const Eigen::Isometry3d& X_WB_next) {
     current->max_penetration_m = std::max(current->max_penetration_m, penetration);
   }
   if (unstable()) blew_up = true;
+  if (trace_every > 0 && segment_hook && current && current->steps % trace_every == 0) {
+    PhaseSnapshot sample = snapshot(current->name);
+    sample.phase_end = false;
+    segment_hook(sample);
+  }
+}
+
+PhaseSnapshot GraspSimulation::Impl::snapshot(const std::string& phase) const {
+  PhaseSnapshot out;
+  out.phase = phase;
+  out.sim_time_s = time_s;
+  out.X_WO = X_WO();
+  out.X_WL = bullet::hand_link_poses(*hand_body);
+  out.q = bullet::hand_joint_positions(*hand_body, static_cast<int>(hand.joints.size()));
+  const bool planned_reference = !closed || phase == "settle" || phase == "close";
+  out.object_shift_m =
+      pose_change(planned_reference ? grasp.X_OB.inverse() : X_BO_ref, &out.object_turn_rad);
+  double penetration = 0.0;
+  contacts(out.contact_count, penetration);
+  return out;
 }
 
 void GraspSimulation::Impl::contacts(int& count, double& max_penetration) const {
@@ -582,7 +607,7 @@ PhaseResult GraspSimulation::shake() {
   static const char* kAxes[3] = {"x", "y", "z"};
   // Ends a segment: hook, then held or not (the phase stops at the first failing segment).
   auto segment_held = [&](const std::string& name, bool ran) {
-    if (s.segment_hook) s.segment_hook(snapshot("shake " + name));
+    if (s.segment_hook) s.segment_hook(s.snapshot("shake " + name));
     return s.segment_holds(r, "shake " + name, ran);
   };
   bool ok = true;
@@ -633,7 +658,7 @@ PhaseResult GraspSimulation::gravity6() {
     g[d / 2] = (d % 2 == 0 ? 1.0 : -1.0) * s.params.gravity_mps2;
     s.set_gravity(g);
     const bool ran = s.run(s.params.gravity6_time_s, [&](double) { return X_WB0; });
-    if (s.segment_hook) s.segment_hook(snapshot(std::string("gravity6 ") + kNames[d]));
+    if (s.segment_hook) s.segment_hook(s.snapshot(std::string("gravity6 ") + kNames[d]));
     if (!s.segment_holds(r, std::string("gravity ") + kNames[d], ran)) break;
   }
   s.finish(r, s.X_BO_ref);
@@ -642,14 +667,7 @@ PhaseResult GraspSimulation::gravity6() {
 }
 
 PhaseSnapshot GraspSimulation::snapshot(const std::string& phase) const {
-  const Impl& s = *impl_;
-  PhaseSnapshot out;
-  out.phase = phase;
-  out.sim_time_s = s.time_s;
-  out.X_WO = s.X_WO();
-  out.X_WL = bullet::hand_link_poses(*s.hand_body);
-  out.q = bullet::hand_joint_positions(*s.hand_body, static_cast<int>(s.hand.joints.size()));
-  return out;
+  return impl_->snapshot(phase);
 }
 
 const SimObjectInfo& GraspSimulation::object_info() const { return impl_->object->info; }

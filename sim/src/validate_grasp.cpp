@@ -159,9 +159,10 @@ SimResult validate_grasp(const Mesh& mesh, const HandModel& hand, const Grasp& g
   }
   // gravity6 starts from the closed grasp again: a fresh, identical world (deterministic).
   GraspSimulation sim(mesh, hand, grasp, params);
-  sim.set_segment_hook(hook);
   SimResult scratch;
-  if (settle_and_close(sim, scratch, PhaseHook{}, false)) {
+  const bool closed_again = settle_and_close(sim, scratch, PhaseHook{}, false);
+  sim.set_segment_hook(hook);  // after the repeated close, which the hook has already seen
+  if (closed_again) {
     result.phases.push_back(sim.gravity6());
     if (hook) hook(sim.snapshot("gravity6"));
   } else {

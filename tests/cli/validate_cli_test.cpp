@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
@@ -198,6 +200,35 @@ TEST_F(ValidateCli, ContactSqueezeIsRecordedAndPressesNothingWhenThePlanHasNoCon
   EXPECT_EQ(sim["parameters"]["squeeze_direction"], "contacts");
   // This plan lists no contacts: the pads hold the plan on the faces without squeezing.
   EXPECT_NE(sim["grasps"][0]["outcome"], "held");
+}
+
+TEST_F(ValidateCli, TraceWritesTheObjectInTheHandThroughEveryPhaseAsCsv) {
+  const std::string trace = (dir_ / "trace.csv").string();
+  const auto r = run_cordgrasp("validate --plan " + plan_path() +
+                               " --tests lift --grasps 1 -q --trace " + trace +
+                               " --trace-interval 0.5 --out " + out_path());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream in(trace);
+  std::string line;
+  ASSERT_TRUE(std::getline(in, line));
+  EXPECT_EQ(line, "grasp,phase,phase_end,sim_time_s,object_shift_m,object_turn_rad,contacts");
+  int lift_samples = 0;
+  std::vector<std::string> ends;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    ASSERT_EQ(cells.size(), 7u) << line;
+    EXPECT_EQ(cells[0], "0") << line;  // grasp 0 only
+    if (cells[2] == "1") ends.push_back(cells[1]);
+    else if (cells[1] == "lift") ++lift_samples;
+  }
+  EXPECT_EQ(lift_samples, 4);  // 2 s of lift every 0.5 s
+  EXPECT_EQ(ends, (std::vector<std::string>{"settle", "close", "lift"}));
+}
+
+TEST_F(ValidateCli, TraceIntoAMissingFolderFailsBeforeSimulating) {
+  expect_error("--trace " + (dir_ / "no" / "trace.csv").string(), "output directory does not exist");
 }
 
 TEST_F(ValidateCli, UnknownSqueezeDirectionIsAnError) {

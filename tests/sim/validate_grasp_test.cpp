@@ -182,11 +182,44 @@ TEST(ValidateGrasp, HookSeesEveryPhaseEndWithAllLinkPoses) {
   const SimTests tests{true, false, false};
   validate_grasp(box(), gripper(), centre_pinch(), gripper_params(), tests,
                  [&](const PhaseSnapshot& s) {
+                   EXPECT_TRUE(s.phase_end) << "no trace samples unless asked for";
                    phases.push_back(s.phase);
                    EXPECT_EQ(s.X_WL.size(), gripper().links.size());
                    EXPECT_EQ(s.q.size(), static_cast<Eigen::Index>(gripper().joints.size()));
                  });
   EXPECT_EQ(phases, (std::vector<std::string>{"settle", "close", "lift"}));
+}
+
+TEST(ValidateGrasp, TraceSamplesFollowTheObjectAndEachPhaseEndsAtItsOutcome) {
+  constexpr double kTraceInterval_s = 0.1;
+  SimParams params = gripper_params();
+  params.trace_interval_s = kTraceInterval_s;
+  std::vector<PhaseSnapshot> seen;
+  const SimTests tests{true, false, false};
+  const SimResult r = validate_grasp(box(), gripper(), centre_pinch(), params, tests,
+                                     [&](const PhaseSnapshot& s) { seen.push_back(s); });
+  int lift_samples = 0;
+  for (size_t i = 0; i < seen.size(); ++i) {
+    if (i > 0) EXPECT_GE(seen[i].sim_time_s, seen[i - 1].sim_time_s);
+    if (seen[i].phase == "lift" && !seen[i].phase_end) ++lift_samples;
+  }
+  EXPECT_EQ(lift_samples, static_cast<int>(std::lround(
+                              (params.lift_time_s + params.lift_hold_s) / kTraceInterval_s)));
+  // The lift raises the box 10 cm; in the hand it stays put, touching both pads throughout.
+  for (const PhaseSnapshot& s : seen) {
+    if (s.phase != "lift") continue;
+    EXPECT_LT(s.object_shift_m, params.held_translation_m) << s.sim_time_s;
+    EXPECT_GE(s.contact_count, 2) << s.sim_time_s;
+  }
+  // Each phase's last snapshot measures what its outcome measured.
+  for (const PhaseResult& p : r.phases) {
+    const auto end = std::find_if(seen.begin(), seen.end(), [&](const PhaseSnapshot& s) {
+      return s.phase_end && s.phase == p.name;
+    });
+    ASSERT_NE(end, seen.end()) << p.name;
+    EXPECT_NEAR(end->object_shift_m, p.translation_m, 1e-12) << p.name;
+    EXPECT_NEAR(end->object_turn_rad, p.rotation_rad, 1e-12) << p.name;
+  }
 }
 
 TEST(ValidateGrasp, WorldFrameTurnsTheApproachDownAndTheHandRisesDuringLift) {

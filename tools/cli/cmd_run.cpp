@@ -121,7 +121,7 @@ void run(const RunOptions& opt) {
     const auto hooks = [&](int k) -> PhaseHook {
       if (opt.no_render) return {};
       return [&frames, k](const PhaseSnapshot& s) {
-        if (!pictured_phase(s.phase)) return;
+        if (!s.phase_end || !pictured_phase(s.phase)) return;
         SnapshotFrame f;
         f.X_WL = s.X_WL;
         f.X_WO = s.X_WO;

@@ -4,8 +4,10 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "commands.h"
+#include "cordgrasp/core/atomic_file.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
@@ -14,6 +16,7 @@
 #include "hand_scene.h"
 #include "plan_job.h"
 #include "plan_json.h"
+#include "render_options.h"
 #include "sim_json.h"
 #include "text_format.h"
 
@@ -47,6 +50,8 @@ struct ValidateOptions {
   PerturbationParams perturbation;
   std::uint64_t seed = 1;
   std::string snapshots_dir;
+  std::string trace_path;
+  double trace_interval_s = 0.01;
   std::string out;
   bool quiet = false;
 };
@@ -58,6 +63,9 @@ std::string canonical(const std::string& path) {
 }
 
 void run_validate(const ValidateOptions& opt) {
+  // Output folders are checked before minutes of simulation, not after.
+  check_output_file(opt.out);
+  if (!opt.trace_path.empty()) check_output_file(opt.trace_path);
   const nlohmann::json plan_json = read_plan_json(opt.plan);
   // Hand: the plan's, or the one given (which must be the plan's).
   const std::string hand_path = opt.hand.empty() ? plan_hand_path(plan_json) : opt.hand;
@@ -116,10 +124,21 @@ void run_validate(const ValidateOptions& opt) {
       throw InputError("validate: --snapshots '" + opt.snapshots_dir + "' is not a directory");
     renderer = std::make_unique<Renderer>();
   }
-  const auto hooks = [&](int) -> PhaseHook {
-    if (!renderer) return {};
-    return [&](const PhaseSnapshot& s) {
-      if (s.phase.find(' ') != std::string::npos) return;  // a segment, e.g. "shake x"
+  // --trace: the object in the hand every trace_interval_s and at every phase end, as CSV.
+  std::ostringstream trace;
+  if (!opt.trace_path.empty()) {
+    params.trace_interval_s = opt.trace_interval_s;
+    trace << "grasp,phase,phase_end,sim_time_s,object_shift_m,object_turn_rad,contacts\n";
+  }
+  const auto hooks = [&](int k) -> PhaseHook {
+    if (!renderer && opt.trace_path.empty()) return {};
+    return [&, k](const PhaseSnapshot& s) {
+      if (!opt.trace_path.empty())
+        trace << k << ',' << s.phase << ',' << (s.phase_end ? 1 : 0) << ','
+              << format_number(s.sim_time_s) << ',' << format_number(s.object_shift_m) << ','
+              << format_number(s.object_turn_rad) << ',' << s.contact_count << '\n';
+      // Pictures at phase ends only, not of trace samples or segments (e.g. "shake x").
+      if (!renderer || !s.phase_end || s.phase.find(' ') != std::string::npos) return;
       frames.push_back({s.X_WL, s.X_WO, "", s.phase});
     };
   };
@@ -155,6 +174,7 @@ void run_validate(const ValidateOptions& opt) {
                          });
   doc.plan_path = canonical(opt.plan);
   doc.object_path = opt.object.empty() ? plan.object_path : canonical(opt.object);
+  if (!opt.trace_path.empty()) write_file_atomically(opt.trace_path, trace.str());
   write_sim_file(opt.out, doc, hand);
   int held = 0;
   for (const SimResult& r : doc.results) held += r.held();
@@ -255,6 +275,14 @@ void add_validate_command(CLI::App& app) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--seed", opt->seed, "Seed of the trials' random directions")
+      ->capture_default_str();
+  cmd->add_option("--trace", opt->trace_path,
+                  "CSV of the object's shift [m] and turn [rad] in the hand and its contact count, "
+                  "every --trace-interval of simulated time and at every phase end (first trial "
+                  "of each grasp)");
+  cmd->add_option("--trace-interval", opt->trace_interval_s,
+                  "Simulated time between --trace rows [s]")
+      ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->add_option("--snapshots", opt->snapshots_dir,
                   "Existing folder: one PNG per grasp and phase end, grasp_K_<phase>.png");

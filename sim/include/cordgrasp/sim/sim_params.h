@@ -191,6 +191,11 @@ struct SimParams {
   /// [m]. Of the 132 cordgrasp_sah bench grasps settle moved 8 objects by 1.3–34 mm (all 8
   /// failed), one by 0.8 mm (held) and the rest not at all (docs/physics.md).
   double settle_shift_tolerance_m = 1e-3;
+
+  // --- Tracing -----------------------------------------------------------------------------
+  /// > 0: the phase hook also gets a snapshot every this many seconds of simulated time inside
+  /// the phases (PhaseSnapshot::phase_end false), e.g. to see when an object slips [s].
+  double trace_interval_s = 0.0;
 };
 
 }  // namespace cordgrasp

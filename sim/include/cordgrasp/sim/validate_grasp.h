@@ -27,16 +27,26 @@ SimTests sim_tests_from_string(const std::string& text);
 /// "lift,shake,gravity6" for the enabled tests.
 std::string to_string(const SimTests& tests);
 
-/// World state at the end of a phase, for drawing (sim never depends on render).
+/// World state at the end of a phase, or inside one (SimParams::trace_interval_s), for drawing
+/// and tracing (sim never depends on render).
 struct PhaseSnapshot {
   std::string phase;                  ///< phase name (gravity6 segments: "gravity6 -x" etc.)
+  bool phase_end = true;              ///< false: a trace sample inside the phase
   double sim_time_s = 0.0;            ///< simulated time since the world was built [s]
+  /// Object pose in the hand against the phase's reference (the planned pose in settle and
+  /// close, the pose right after closing from then on): shift of its centre of mass
+  /// [m] and turn [rad], as the outcome measures them; hand–object contacts within
+  /// SimParams::contact_distance_m.
+  double object_shift_m = 0.0;
+  double object_turn_rad = 0.0;
+  int contact_count = 0;
   Eigen::Isometry3d X_WO = Eigen::Isometry3d::Identity();  ///< object in world
   std::vector<Eigen::Isometry3d> X_WL;  ///< every HandModel link in world
   Eigen::VectorXd q;                  ///< joint vector (one entry per HandModel joint)
 };
 
-/// Called at the end of every phase (and of every shake / gravity6 segment).
+/// Called at the end of every phase (and of every shake / gravity6 segment), and with
+/// phase_end = false every SimParams::trace_interval_s inside the phases.
 using PhaseHook = std::function<void(const PhaseSnapshot&)>;
 
 /// Physics validation of a planned grasp (issue 5): settle, close (squeeze), then the tests —
@@ -85,7 +95,8 @@ class GraspSimulation {
   const SimObjectInfo& object_info() const;
   /// Object frame in world at the start.
   Eigen::Isometry3d X_WO_start() const;
-  /// Sets a hook called by shake() and gravity6() at the end of each segment.
+  /// Sets a hook called by shake() and gravity6() at the end of each segment, and every
+  /// SimParams::trace_interval_s of simulated time inside every phase (phase_end = false).
   void set_segment_hook(PhaseHook hook);
 
  private:
