@@ -499,7 +499,8 @@ Eigen::VectorXd GraspSimulation::Impl::squeeze_efforts() const {
   // effort limit caps.
   std::vector<Eigen::Vector3d> forces;
   for (const Contact& c : grasp.contacts) forces.push_back(-c.n_O);
-  const Eigen::VectorXd tau = contact_force_torques(hand, grasp.q, grasp.X_OB, grasp.contacts, forces);
+  const Eigen::VectorXd tau =
+      contact_force_torques(hand, grasp.q, grasp.X_OB, grasp.contacts, forces);
   double force = std::numeric_limits<double>::infinity();
   for (const int j : actor_joints)
     if (std::abs(tau[j]) > kNegligibleTorquePerNewton)

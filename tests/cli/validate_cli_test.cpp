@@ -228,7 +228,8 @@ TEST_F(ValidateCli, TraceWritesTheObjectInTheHandThroughEveryPhaseAsCsv) {
 }
 
 TEST_F(ValidateCli, TraceIntoAMissingFolderFailsBeforeSimulating) {
-  expect_error("--trace " + (dir_ / "no" / "trace.csv").string(), "output directory does not exist");
+  expect_error("--trace " + (dir_ / "no" / "trace.csv").string(),
+               "output directory does not exist");
 }
 
 TEST_F(ValidateCli, UnknownSqueezeDirectionIsAnError) {

@@ -79,7 +79,8 @@ Grasp centre_pinch_with_contacts() {
   const auto X_OL = link_poses(gripper(), g.q, g.X_OB);
   for (const Joint& joint : gripper().joints) {
     if (joint.type != JointType::kPrismatic) continue;
-    const double side = X_OL[static_cast<size_t>(joint.child_link)].translation().x() > 0.0 ? 1.0 : -1.0;
+    const double x = X_OL[static_cast<size_t>(joint.child_link)].translation().x();
+    const double side = x > 0.0 ? 1.0 : -1.0;
     Contact c;
     c.link = joint.child_link;
     c.p_O = Eigen::Vector3d(side * 0.5 * kBoxSide_m, 0, 0);

@@ -239,9 +239,9 @@ void add_validate_command(CLI::App& app) {
                   "Squeeze spring rest point past the planned joint values [rad] (default " +
                       format_number(defaults.squeeze_rad) + ")");
   cmd->add_option("--squeeze-direction", opt->squeeze_direction,
-                  std::string("Squeeze: 'actor' (every finger joint closes with its full effort) or "
-                              "'contacts' (the joints press the planned contacts along their "
-                              "normals with one common force) (default ") +
+                  std::string("Squeeze: 'actor' (every finger joint closes with its full "
+                              "effort) or 'contacts' (the joints press the planned contacts "
+                              "along their normals with one common force) (default ") +
                       to_string(defaults.squeeze_direction) + ")")
       ->check(CLI::IsMember({"actor", "contacts"}));
   cmd->add_option("--effort-scale", opt->effort_scale,
