@@ -201,7 +201,9 @@ TEST(ValidateGrasp, TraceSamplesFollowTheObjectAndEachPhaseEndsAtItsOutcome) {
                                      [&](const PhaseSnapshot& s) { seen.push_back(s); });
   int lift_samples = 0;
   for (size_t i = 0; i < seen.size(); ++i) {
-    if (i > 0) EXPECT_GE(seen[i].sim_time_s, seen[i - 1].sim_time_s);
+    if (i > 0) {
+      EXPECT_GE(seen[i].sim_time_s, seen[i - 1].sim_time_s);
+    }
     if (seen[i].phase == "lift" && !seen[i].phase_end) ++lift_samples;
   }
   EXPECT_EQ(lift_samples, static_cast<int>(std::lround(
