@@ -1,8 +1,9 @@
 // Physics validation of grasps from the cord planner (issue 5): the default hand's first
-// force-closure grasp on the shipped cylinder holds; on every shipped object the simulation
-// stays finite and stable.
+// force-closure grasp on the shipped cylinder holds, squeezed either way; on every shipped
+// object the simulation stays finite and stable.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -24,6 +25,8 @@ constexpr double kMaxPenetration_m = 5e-3;
 /// Largest joint effort accepted [N·m or N]: a finite bound well above every shipped hand's
 /// effort limits (≤ 2 N·m for the SAH-like hand); NaN fails it too.
 constexpr double kMaxEffort = 1e3;
+/// A joint effort that presses rather than idles [N·m] (the SAH-like hand's limits are 0.8–2).
+constexpr double kPressingEffort_Nm = 0.1;
 
 const HandModel& default_hand() {
   static const HandModel hand = load_hand(default_hand_name());
@@ -72,6 +75,25 @@ TEST(ValidatePlannedGrasp, ForceClosureSahGraspOnTheCylinderHoldsThroughLiftAndS
   EXPECT_LT(shake.translation_m, SimParams{}.held_translation_m);
   EXPECT_LT(shake.rotation_rad, SimParams{}.held_rotation_rad);
   EXPECT_LT(shake.max_penetration_m, kMaxPenetration_m);
+}
+
+TEST(ValidatePlannedGrasp, SqueezingAlongTheContactNormalsHoldsTheSahCylinderGraspToo) {
+  const Mesh mesh = load_mesh(shipped_object("long_cylinder"));
+  const Grasp grasp = first_planned_grasp(mesh, default_hand());
+  ASSERT_GT(grasp.q.size(), 0) << "no force-closure grasp planned";
+  ASSERT_GE(grasp.contacts.size(), 3u);
+  SimParams params = planner_contact_params();
+  params.squeeze_direction = SqueezeDirection::kContactNormals;
+  const SimResult r =
+      validate_grasp(mesh, default_hand(), grasp, params, SimTests{true, true, false});
+  EXPECT_EQ(r.outcome, Outcome::kHeld) << to_string(r.outcome);
+  // The finger joints press the contacts: some revolute joint works against the object.
+  const PhaseResult* lift = r.phase("lift");
+  ASSERT_NE(lift, nullptr);
+  double largest_effort = 0.0;
+  for (double effort : lift->joint_efforts)
+    largest_effort = std::max(largest_effort, std::abs(effort));
+  EXPECT_GT(largest_effort, kPressingEffort_Nm);
 }
 
 TEST(ValidatePlannedGrasp, DefaultHandStaysStableOnEveryShippedObject) {
