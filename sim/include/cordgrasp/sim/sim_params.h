@@ -139,7 +139,8 @@ struct SimParams {
   /// Squeeze direction: actor closing directions, or the planned contacts' normals.
   SqueezeDirection squeeze_direction = SqueezeDirection::kActor;
   /// Squeeze compliantly (the spring above); false: full effort until the joint reaches its
-  /// rest point.
+  /// rest point (with kContactNormals too: each pressing joint's full effort limit, in the
+  /// direction it presses, not its share of the common force).
   bool compliant_squeeze = true;
   /// Position gain of the joint servos: commanded speed = gain × error, capped [1/s].
   double servo_gain_per_s = 20.0;
