@@ -6,6 +6,9 @@
 #   tools/hold_rates.sh [OUT_DIR] [GRASPS_PER_OBJECT] [HANDS...]
 #   e.g. tools/hold_rates.sh /tmp/holds 3 cordgrasp_sah schunk_sah panda_hand
 #
+# HANDS are shipped hand names or hand description files (a variant's results then go to
+# OUT_DIR/<file name without .yaml>/).
+#
 # Environment: CORDGRASP (the executable, default build/tools/cordgrasp), DATA (shared data,
 # default ../shared/data), TIME_LIMIT (plan time limit per object, default 10 s),
 # SOFT_FINGER (soft-finger radius for two-finger grippers, default 0.005 m: two point
@@ -44,14 +47,15 @@ SETS[ycb]="$(ls "$DATA"/objects/ycb/*.obj)"
 
 summary=()
 for hand in "${HANDS[@]}"; do
+  label="$(basename "$hand" .yaml)"
   extra=()
-  case "$hand" in panda_hand|parallel_gripper) extra=(--soft-finger-radius "$SOFT_FINGER") ;; esac
+  case "$label" in panda_hand|parallel_gripper) extra=(--soft-finger-radius "$SOFT_FINGER") ;; esac
   for set in shipped kit ycb; do
     held=0; total=0; no_plan=0; trials_held=0; trials_total=0
     failed=(0 0 0 0 0 0)   # not held in settle, close, lift, shake, gravity6; preshape overlaps
     for obj in ${SETS[$set]}; do
       name="$(basename "$obj" .obj)"
-      base="$OUT/$hand/$set/$name"
+      base="$OUT/$label/$set/$name"
       mkdir -p "$(dirname "$base")"
       if ! "$CG" plan --hand "$hand" --object "$obj" --grasps "$GRASPS" \
           --time-limit "$TIME_LIMIT" --seed 1 "${extra[@]}" --out "$base.plan.json" \
@@ -78,11 +82,11 @@ for hand in "${HANDS[@]}"; do
         trials_held=$((trials_held + $(echo "$t" | awk '{print $3}')))
         trials_total=$((trials_total + $(echo "$t" | awk '{print $5}')))
       fi
-      echo "$hand $set $name: $line"
+      echo "$label $set $name: $line"
     done
     trials_text=""
     [ "$TRIALS" -gt 1 ] && trials_text=", held in $trials_held / $trials_total trials"
-    summary+=("$hand $set: held $held / $total force-closure grasps$trials_text ($no_plan objects without a plan); not held in close ${failed[1]}, lift ${failed[2]}, shake ${failed[3]}, settle ${failed[0]}; preshape overlaps ${failed[5]}")
+    summary+=("$label $set: held $held / $total force-closure grasps$trials_text ($no_plan objects without a plan); not held in close ${failed[1]}, lift ${failed[2]}, shake ${failed[3]}, settle ${failed[0]}; preshape overlaps ${failed[5]}")
   done
 done
 printf '%s\n' "${summary[@]}" | tee "$OUT/summary.txt"
