@@ -13,7 +13,7 @@
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/sim/sim_params.h"
-#include "sim_json.h"
+#include "cordgrasp/jobs/sim_json.h"
 #include "test_files.h"
 #include "test_paths.h"
 
@@ -341,7 +341,7 @@ TEST(FailuresLine, CountsEachGraspThatDidNotHoldUnderItsFirstFailedPhase) {
       result({{"settle", Outcome::kHeld}, {"close", Outcome::kHeld}, {"lift", Outcome::kHeld}},
              false),
       result({{"settle", Outcome::kHeld}, {"close", Outcome::kDropped}}, false)};
-  EXPECT_EQ(cli::failures_line(results),
+  EXPECT_EQ(failures_line(results),
             "not held by phase: settle 0, close 2, lift 1, shake 0, gravity6 0; preshape "
             "overlaps 1");
 }
@@ -355,12 +355,12 @@ TEST(SimResultLine, SaysHowFarSettlePushedTheObjectWhenThePreshapeHandOverlapsIt
   settle.translation_m = 0.0123;
   r.phases = {settle};
   r.preshape_overlap = true;
-  EXPECT_NE(cli::sim_result_line(r).find("overlaps the object's collision shape (settle moved "
+  EXPECT_NE(sim_result_line(r).find("overlaps the object's collision shape (settle moved "
                                          "it 12.3 mm)"),
             std::string::npos)
-      << cli::sim_result_line(r);
+      << sim_result_line(r);
   r.preshape_overlap = false;
-  EXPECT_EQ(cli::sim_result_line(r).find("overlaps"), std::string::npos);
+  EXPECT_EQ(sim_result_line(r).find("overlaps"), std::string::npos);
 }
 
 }  // namespace

@@ -15,7 +15,7 @@
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/render/png_io.h"
 #include "cordgrasp/render/renderer.h"
-#include "hand_scene.h"
+#include "cordgrasp/jobs/hand_scene.h"
 
 namespace {
 
@@ -34,13 +34,13 @@ bool make_sah_scene(cordgrasp::Scene& scene) {
   const cordgrasp::HandModel hand = cordgrasp::load_hand("schunk_sah");
   const auto mug = std::make_shared<const cordgrasp::Mesh>(cordgrasp::load_mesh(kMug));
   const Eigen::Vector3d c = cordgrasp::mesh_bounds(*mug).center();
-  cordgrasp::cli::add_object(scene, mug);
-  const Eigen::VectorXd q = cordgrasp::cli::closing_configuration(hand, 0.5);
+  cordgrasp::add_object(scene, mug);
+  const Eigen::VectorXd q = cordgrasp::closing_configuration(hand, 0.5);
   Eigen::Isometry3d X_WG = Eigen::Isometry3d::Identity();  // GCP +z (approach) along −x
   X_WG.linear() << 0, 0, -1, 0, 1, 0, 1, 0, 0;
   X_WG.translation() = c + Eigen::Vector3d(0.02, 0.0, 0.0);
   const auto X_WL = cordgrasp::link_poses(hand, q, cordgrasp::root_pose_for_gcp(hand, q, X_WG));
-  cordgrasp::cli::add_hand(scene, cordgrasp::cli::make_hand_meshes(hand), X_WL);
+  cordgrasp::add_hand(scene, cordgrasp::make_hand_meshes(hand), X_WL);
   cordgrasp::ScenePolyline cord;
   for (int i = 0; i <= 32; ++i) {
     const double t = M_PI * i / 32.0;

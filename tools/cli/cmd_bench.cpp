@@ -12,8 +12,9 @@
 #include <memory>
 #include <sstream>
 
-#include "bench_job.h"
+#include "cordgrasp/jobs/bench_job.h"
 #include "commands.h"
+#include "options.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/version.h"
@@ -21,8 +22,8 @@
 #include "cordgrasp/render/png_io.h"
 #include "cordgrasp/render/renderer.h"
 #include "cordgrasp/sim/validate_grasp.h"
-#include "hand_scene.h"
-#include "render_options.h"
+#include "cordgrasp/jobs/hand_scene.h"
+#include "cordgrasp/jobs/render_options.h"
 
 namespace cordgrasp::cli {
 namespace {
@@ -242,8 +243,6 @@ int run_bench(const BenchOptions& opt) {
 
 }  // namespace
 
-void add_bench_command(CLI::App& app);
-CORDGRASP_REGISTER_COMMAND(80, add_bench_command);
 
 void add_bench_command(CLI::App& app) {
   auto opt = std::make_shared<BenchOptions>();

@@ -155,8 +155,6 @@ void run_explore(const ExploreOptions& opt) {
 
 }  // namespace
 
-void add_explore_command(CLI::App& app);
-CORDGRASP_REGISTER_COMMAND(20, add_explore_command);
 
 void add_explore_command(CLI::App& app) {
   auto opt = std::make_shared<ExploreOptions>();

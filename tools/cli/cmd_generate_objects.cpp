@@ -41,8 +41,6 @@ void run_generate_objects(const GenerateObjectsOptions& opt) {
 
 }  // namespace
 
-void add_generate_objects_command(CLI::App& app);
-CORDGRASP_REGISTER_COMMAND(80, add_generate_objects_command);
 
 void add_generate_objects_command(CLI::App& app) {
   auto opt = std::make_shared<GenerateObjectsOptions>();

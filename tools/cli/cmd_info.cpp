@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
-#include "info.h"
+#include "cordgrasp/jobs/info.h"
 
 namespace cordgrasp::cli {
 namespace {
@@ -17,8 +17,6 @@ struct InfoOptions {
 
 }  // namespace
 
-void add_info_command(CLI::App& app);
-CORDGRASP_REGISTER_COMMAND(10, add_info_command);
 
 void add_info_command(CLI::App& app) {
   auto opt = std::make_shared<InfoOptions>();

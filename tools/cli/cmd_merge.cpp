@@ -8,7 +8,7 @@
 #include <set>
 #include <sstream>
 
-#include "bench_job.h"
+#include "cordgrasp/jobs/bench_job.h"
 #include "commands.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/version.h"
@@ -101,8 +101,6 @@ void run_merge(const MergeOptions& opt) {
 
 }  // namespace
 
-void add_merge_command(CLI::App& app);
-CORDGRASP_REGISTER_COMMAND(85, add_merge_command);
 
 void add_merge_command(CLI::App& app) {
   auto opt = std::make_shared<MergeOptions>();

@@ -6,11 +6,12 @@
 #include <memory>
 
 #include "commands.h"
+#include "options.h"
 #include "cordgrasp/core/assets.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
-#include "plan_job.h"
-#include "plan_json.h"
+#include "cordgrasp/jobs/plan_job.h"
+#include "cordgrasp/jobs/plan_json.h"
 
 namespace cordgrasp::cli {
 namespace {
@@ -72,8 +73,6 @@ void run_plan(const PlanOptions& opt) {
 
 }  // namespace
 
-void add_plan_command(CLI::App& app);
-CORDGRASP_REGISTER_COMMAND(30, add_plan_command);
 
 void add_plan_command(CLI::App& app) {
   auto opt = std::make_shared<PlanOptions>();

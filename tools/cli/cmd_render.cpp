@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "options.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/explore_cords.h"
 #include "cordgrasp/core/hand_io.h"
@@ -20,10 +21,10 @@
 #include "cordgrasp/render/contact_sheet.h"
 #include "cordgrasp/render/png_io.h"
 #include "cordgrasp/render/renderer.h"
-#include "hand_scene.h"
-#include "plan_json.h"
-#include "region_json.h"
-#include "render_options.h"
+#include "cordgrasp/jobs/hand_scene.h"
+#include "cordgrasp/jobs/plan_json.h"
+#include "cordgrasp/jobs/region_json.h"
+#include "cordgrasp/jobs/render_options.h"
 
 namespace cordgrasp::cli {
 namespace {
@@ -93,7 +94,7 @@ void run_render_regions(const RenderCommandOptions& opt) {
     throw InputError("render: --region " + std::to_string(opt.region) + ": '" + opt.regions +
                      "' has regions 1.." + std::to_string(count));
   PictureOptions picture = opt.picture;
-  if (!picture.view_given()) picture.view = "approach";  // shows the cords best
+  if (picture.view.empty()) picture.view = "approach";  // shows the cords best
   OverlayStyle style;
   style.p1 = picture.view != "approach";  // P1 would sit in front of the camera
   Renderer renderer;
@@ -359,8 +360,6 @@ void run_render(const RenderCommandOptions& opt) {
 
 }  // namespace
 
-void add_render_command(CLI::App& app);
-CORDGRASP_REGISTER_COMMAND(60, add_render_command);
 
 void add_render_command(CLI::App& app) {
   auto opt = std::make_shared<RenderCommandOptions>();

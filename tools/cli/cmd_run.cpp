@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "commands.h"
+#include "options.h"
 #include "cordgrasp/core/assets.h"
 #include "cordgrasp/core/atomic_file.h"
 #include "cordgrasp/core/error.h"
@@ -16,13 +17,13 @@
 #include "cordgrasp/render/contact_sheet.h"
 #include "cordgrasp/render/png_io.h"
 #include "cordgrasp/render/renderer.h"
-#include "hand_scene.h"
-#include "plan_job.h"
-#include "plan_json.h"
-#include "render_options.h"
-#include "run_report.h"
-#include "sim_json.h"
-#include "text_format.h"
+#include "cordgrasp/jobs/hand_scene.h"
+#include "cordgrasp/jobs/plan_job.h"
+#include "cordgrasp/jobs/plan_json.h"
+#include "cordgrasp/jobs/render_options.h"
+#include "cordgrasp/jobs/run_report.h"
+#include "cordgrasp/jobs/sim_json.h"
+#include "cordgrasp/jobs/text_format.h"
 
 namespace cordgrasp::cli {
 namespace {
@@ -218,8 +219,6 @@ void run(const RunOptions& opt) {
 
 }  // namespace
 
-void add_run_command(CLI::App& app);
-CORDGRASP_REGISTER_COMMAND(5, add_run_command);
 
 void add_run_command(CLI::App& app) {
   auto opt = std::make_shared<RunOptions>();

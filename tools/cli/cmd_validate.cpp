@@ -13,12 +13,12 @@
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/sim/convex_decomposition.h"
 #include "cordgrasp/render/renderer.h"
-#include "hand_scene.h"
-#include "plan_job.h"
-#include "plan_json.h"
-#include "render_options.h"
-#include "sim_json.h"
-#include "text_format.h"
+#include "cordgrasp/jobs/hand_scene.h"
+#include "cordgrasp/jobs/plan_job.h"
+#include "cordgrasp/jobs/plan_json.h"
+#include "cordgrasp/jobs/render_options.h"
+#include "cordgrasp/jobs/sim_json.h"
+#include "cordgrasp/jobs/text_format.h"
 
 namespace cordgrasp::cli {
 namespace {
@@ -191,8 +191,6 @@ void run_validate(const ValidateOptions& opt) {
 
 }  // namespace
 
-void add_validate_command(CLI::App& app);
-CORDGRASP_REGISTER_COMMAND(40, add_validate_command);
 
 void add_validate_command(CLI::App& app) {
   auto opt = std::make_shared<ValidateOptions>();

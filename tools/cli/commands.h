@@ -1,19 +1,18 @@
 #pragma once
+// The cordgrasp subcommands: each cmd_<name>.cpp defines one add_<name>_command, and main.cpp
+// adds them, in the order --help lists them.
 #include <CLI/CLI.hpp>
 
 namespace cordgrasp::cli {
 
-/// Adds one subcommand (options and callback) to the cordgrasp app.
-using CommandAdder = void (*)(CLI::App& app);
-
-/// Registers a subcommand; `order` sets its place in --help. Use CORDGRASP_REGISTER_COMMAND.
-bool register_command(int order, CommandAdder adder);
-
-/// Adds every registered subcommand to `app`, in ascending order.
-void add_registered_commands(CLI::App& app);
+void add_run_command(CLI::App& app);             ///< cmd_run.cpp
+void add_info_command(CLI::App& app);            ///< cmd_info.cpp
+void add_explore_command(CLI::App& app);         ///< cmd_explore.cpp
+void add_plan_command(CLI::App& app);            ///< cmd_plan.cpp
+void add_validate_command(CLI::App& app);        ///< cmd_validate.cpp
+void add_render_command(CLI::App& app);          ///< cmd_render.cpp
+void add_bench_command(CLI::App& app);           ///< cmd_bench.cpp
+void add_generate_objects_command(CLI::App& app);  ///< cmd_generate_objects.cpp
+void add_merge_command(CLI::App& app);           ///< cmd_merge.cpp
 
 }  // namespace cordgrasp::cli
-
-/// In a cmd_*.cpp file: CORDGRASP_REGISTER_COMMAND(10, add_info_command);
-#define CORDGRASP_REGISTER_COMMAND(order, adder) \
-  static const bool adder##_registered = ::cordgrasp::cli::register_command(order, adder)

@@ -19,7 +19,15 @@ int main(int argc, char** argv) {
                                         render_backend_version());
   app.require_subcommand(1);
   app.fallthrough();
-  cli::add_registered_commands(app);
+  cli::add_run_command(app);
+  cli::add_info_command(app);
+  cli::add_explore_command(app);
+  cli::add_plan_command(app);
+  cli::add_validate_command(app);
+  cli::add_render_command(app);
+  cli::add_bench_command(app);
+  cli::add_generate_objects_command(app);
+  cli::add_merge_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

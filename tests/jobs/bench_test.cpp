@@ -1,0 +1,306 @@
+// `cordgrasp bench` / `cordgrasp merge` and their library (bench_job.h): attempt list, seeds,
+// shards, results.csv, merging, parallel runs, error rows.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "cordgrasp/jobs/bench_job.h"
+#include "cordgrasp/core/error.h"
+#include "test_paths.h"
+
+namespace cordgrasp {
+namespace {
+
+namespace fs = std::filesystem;
+using BenchRow;
+
+std::string quoted(const std::string& path) { return "\"" + path + "\""; }
+
+std::string temp_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() /
+                       ("cordgrasp_bench_test_" + std::to_string(::getpid()) + "_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+std::string shipped_object(const std::string& name) {
+  return test::source_dir() + "/assets/objects/" + name + ".obj";
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<BenchRow> read_rows(const std::string& dir) {
+  return parse_bench_csv(read_file(dir + "/results.csv"), dir + "/results.csv");
+}
+
+// Cells of every row with the wall-clock columns blanked (they differ between runs).
+std::vector<std::vector<std::string>> rows_without_timings(const std::vector<BenchRow>& rows) {
+  const auto& columns = bench_csv_columns();
+  const auto& timing = bench_timing_columns();
+  std::vector<std::vector<std::string>> out;
+  for (const BenchRow& r : rows) {
+    std::vector<std::string> cells = bench_row_cells(r);
+    for (size_t i = 0; i < columns.size(); ++i)
+      if (std::find(timing.begin(), timing.end(), columns[i]) != timing.end()) cells[i].clear();
+    out.push_back(cells);
+  }
+  return out;
+}
+
+BenchParams two_object_params() {
+  BenchParams p;
+  p.objects = {"a.obj", "b.obj"};
+  p.hands = {"h1", "h2"};
+  p.planners = {"cord", "generic"};
+  p.repeats = 3;
+  p.seed = 7;
+  return p;
+}
+
+TEST(BenchAttempts, AreObjectMajorWithSeedPerRepeat) {
+  const auto attempts = bench_attempts(two_object_params());
+  ASSERT_EQ(attempts.size(), 2u * 2u * 2u * 3u);
+  for (size_t i = 0; i < attempts.size(); ++i) {
+    EXPECT_EQ(attempts[i].index, static_cast<int>(i));
+    EXPECT_EQ(attempts[i].seed, 7u + static_cast<unsigned>(attempts[i].repeat));
+  }
+  EXPECT_EQ(attempts[0].object_path, "a.obj");
+  EXPECT_EQ(attempts[11].object_path, "a.obj");
+  EXPECT_EQ(attempts[12].object_path, "b.obj");
+  EXPECT_EQ(attempts[3].planner, "generic");
+  EXPECT_EQ(attempts[6].hand, "h2");
+  EXPECT_EQ(attempts[2].repeat, 2);
+}
+
+TEST(BenchAttempts, ShardsPartitionTheAttempts) {
+  const auto attempts = bench_attempts(two_object_params());
+  constexpr int kShards = 5;
+  std::multiset<int> seen;
+  for (int k = 1; k <= kShards; ++k)
+    for (const auto& a : shard_attempts(attempts, k, kShards)) {
+      EXPECT_EQ(a.index % kShards, k - 1);
+      seen.insert(a.index);
+    }
+  ASSERT_EQ(seen.size(), attempts.size());
+  for (size_t i = 0; i < attempts.size(); ++i) EXPECT_EQ(seen.count(static_cast<int>(i)), 1u);
+}
+
+TEST(BenchAttempts, ParseShardAcceptsOnlyKOverN) {
+  EXPECT_EQ(parse_shard("2/3"), std::make_pair(2, 3));
+  EXPECT_EQ(parse_shard("1/1"), std::make_pair(1, 1));
+  for (const char* bad : {"0/3", "4/3", "3", "a/b", "1/0", "1/2x", ""})
+    EXPECT_THROW(parse_shard(bad), InputError) << bad;
+}
+
+TEST(BenchAttempts, ObjectDirectoryExpandsToSortedMeshFiles) {
+  const std::string dir = temp_dir("expand");
+  for (const char* name : {"b.obj", "a.STL", "notes.txt"}) std::ofstream(dir + "/" + name) << "x";
+  const auto files = expand_object_args({dir});
+  ASSERT_EQ(files.size(), 2u);
+  EXPECT_EQ(fs::path(files[0]).filename(), "a.STL");
+  EXPECT_EQ(fs::path(files[1]).filename(), "b.obj");
+  EXPECT_THROW(expand_object_args({dir + "/missing"}), InputError);
+  fs::remove_all(dir);
+}
+
+TEST(BenchCsv, RowsRoundTripIncludingQuotedErrors) {
+  BenchRow ok;
+  ok.attempt = 3;
+  ok.object = "box";
+  ok.object_path = "/x/box.obj";
+  ok.hand = "cordgrasp_sah";
+  ok.planner = "cord";
+  ok.repeat = 1;
+  ok.seed = 42;
+  ok.status = "ok";
+  ok.first_fc_s = 0.25;
+  ok.total_s = 0.5;
+  ok.regions = 20;
+  ok.regions_processed = 2;
+  ok.finger_attempts = 3;
+  ok.grasps = 1;
+  ok.epsilon = 0.123456789;
+  ok.alpha_rad = 0.1;
+  ok.chi_m2 = 1.5e-4;
+  ok.region_rank = 1;
+  ok.sim_lift = "held";
+  ok.sim_shake = "slipped";
+  ok.sim_gravity6 = "not_run";
+  ok.sim_outcome = "slipped";
+  ok.sim_wall_s = 1.5;
+  BenchRow bad;
+  bad.attempt = 4;
+  bad.object = "bad";
+  bad.status = "error";
+  bad.error = "load_mesh: 'a, \"b\"':\nno triangles";
+  const std::string text = bench_csv({ok, bad});
+  EXPECT_EQ(text.substr(0, text.find('\n')),
+            "attempt,object,object_path,hand,planner,repeat,seed,status,error,first_fc_s,"
+            "exploration_s,finger_s,quality_s,total_s,regions,regions_processed,"
+            "finger_attempts,grasps,timed_out,epsilon,alpha_rad,chi_m2,region_rank,sim_lift,"
+            "sim_shake,sim_gravity6,sim_outcome,sim_wall_s");
+  const auto rows = parse_bench_csv(text, "test");
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(bench_row_cells(rows[0]), bench_row_cells(ok));
+  EXPECT_EQ(bench_row_cells(rows[1]), bench_row_cells(bad));
+  EXPECT_EQ(rows[1].error, bad.error);
+  EXPECT_FALSE(rows[1].first_fc_s.has_value());
+  EXPECT_FALSE(rows[1].region_rank.has_value());
+}
+
+TEST(BenchCsv, ParseRejectsAnotherHeaderAndShortRows) {
+  EXPECT_THROW(parse_bench_csv("a,b\n1,2\n", "x"), InputError);
+  std::string text = bench_csv({});
+  text += "1,box\n";
+  EXPECT_THROW(parse_bench_csv(text, "x"), InputError);
+}
+
+TEST(BenchMerge, SortsByAttemptAndRejectsDuplicates) {
+  BenchRow a, b, c;
+  a.attempt = 0;
+  b.attempt = 1;
+  c.attempt = 2;
+  const auto merged = merge_bench_rows({{b}, {c, a}});
+  ASSERT_EQ(merged.size(), 3u);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(merged[i].attempt, i);
+  EXPECT_THROW(merge_bench_rows({{a, b}, {b}}), InputError);
+}
+
+TEST(BenchSummary, CountsSuccessAndHoldRatePerGroup) {
+  std::vector<BenchRow> rows(3);
+  for (int i = 0; i < 3; ++i) {
+    rows[i].attempt = i;
+    rows[i].object = "box";
+    rows[i].object_path = "box.obj";
+    rows[i].hand = "h";
+    rows[i].planner = "cord";
+  }
+  rows[0].status = "ok";
+  rows[0].first_fc_s = 1.0;
+  rows[0].alpha_rad = 0.2;
+  rows[0].sim_outcome = "held";
+  rows[1].status = "ok";
+  rows[1].first_fc_s = 3.0;
+  rows[1].alpha_rad = 0.4;
+  rows[1].sim_outcome = "dropped";
+  rows[2].status = "error";
+  rows[2].error = "boom";
+  BenchSummaryInfo info;
+  info.attempts_total = 3;
+  const std::string md = bench_summary_markdown(rows, info);
+  // 3 attempts, 2 found (67 %), 0 no grasp, 1 error, first FC median 2, mean 2, sd 1.414.
+  EXPECT_NE(md.find("| box | h | cord | 3 | 2 (67 %) | 0 | 1 | 2.000 | 2.000 | 1.414 |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| 0.300 | 0.141 |"), std::string::npos) << md;  // α mean, sd
+  EXPECT_NE(md.find("1/2 (50 %)"), std::string::npos) << md;         // sim held
+  EXPECT_NE(md.find("| h | cord | 3 |"), std::string::npos) << md;   // totals
+  EXPECT_NE(md.find("boom"), std::string::npos) << md;
+}
+
+// The CLI runs below use the shipped box and sphere with the default hand, no physics, and a
+// time limit far above what these objects need, so no attempt depends on the machine's load.
+const std::string kBenchArgs = " --hands cordgrasp_sah --planners cord,generic --repeats 2 "
+                               "--time-limit 20 --tests none --no-sheets --quiet";
+
+std::string objects_arg() {
+  return " --objects " + quoted(shipped_object("box")) + " " + quoted(shipped_object("sphere"));
+}
+
+TEST(CliBench, OneAndTwoJobsGiveTheSameRowsAndShardsMergeToThem) {
+  const std::string j1 = temp_dir("j1"), j2 = temp_dir("j2"), s1 = temp_dir("s1"),
+                    s2 = temp_dir("s2"), merged = temp_dir("merged");
+  auto r = test::run_cordgrasp("bench" + objects_arg() + kBenchArgs + " --jobs 1 --out-dir " +
+                               quoted(j1));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = test::run_cordgrasp("bench" + objects_arg() + kBenchArgs + " --jobs 2 --out-dir " +
+                          quoted(j2));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto rows1 = read_rows(j1);
+  ASSERT_EQ(rows1.size(), 2u * 2u * 2u);
+  for (size_t i = 0; i < rows1.size(); ++i) {
+    EXPECT_EQ(rows1[i].attempt, static_cast<int>(i));
+    EXPECT_EQ(rows1[i].status, "ok") << rows1[i].error;
+    EXPECT_TRUE(rows1[i].epsilon && *rows1[i].epsilon > 0.0);
+    EXPECT_TRUE(rows1[i].sim_outcome.empty());  // --tests none
+  }
+  EXPECT_EQ(rows1[0].seed, 1u);
+  EXPECT_EQ(rows1[1].seed, 2u);
+  EXPECT_TRUE(rows1[0].region_rank.has_value());   // cord
+  EXPECT_FALSE(rows1[2].region_rank.has_value());  // generic
+  EXPECT_EQ(rows_without_timings(read_rows(j2)), rows_without_timings(rows1));
+
+  for (const auto& [dir, shard] : {std::pair{s1, "1/2"}, std::pair{s2, "2/2"}}) {
+    r = test::run_cordgrasp("bench" + objects_arg() + kBenchArgs + " --shard " + shard +
+                            " --out-dir " + quoted(dir));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(read_rows(dir).size(), rows1.size() / 2);
+  }
+  // Merging shard 2 before shard 1 still gives attempt order.
+  r = test::run_cordgrasp("merge " + quoted(s2) + " " + quoted(s1) + " --out-dir " +
+                          quoted(merged));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(rows_without_timings(read_rows(merged)), rows_without_timings(rows1));
+  const std::string summary = read_file(merged + "/summary.md");
+  EXPECT_NE(summary.find("| box | cordgrasp_sah | cord | 2 | 2 (100 %)"), std::string::npos)
+      << summary;
+  const auto meta = nlohmann::json::parse(read_file(merged + "/bench.json"));
+  EXPECT_EQ(meta["attempts"], rows1.size());
+
+  // A shard given twice is rejected; a missing shard too unless --allow-missing.
+  const std::string again = temp_dir("again");
+  r = test::run_cordgrasp("merge " + quoted(s1) + " " + quoted(s1) + " --out-dir " +
+                          quoted(again));
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("appears twice"), std::string::npos) << r.output;
+  r = test::run_cordgrasp("merge " + quoted(s1) + " --out-dir " + quoted(again));
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("missing"), std::string::npos) << r.output;
+  r = test::run_cordgrasp("merge " + quoted(s1) + " --allow-missing --out-dir " + quoted(again));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  for (const auto& d : {j1, j2, s1, s2, merged, again}) fs::remove_all(d);
+}
+
+TEST(CliBench, BadMeshIsAnErrorRowAndTheBenchExitsZero) {
+  const std::string dir = temp_dir("bad"), out = dir + "/out";
+  const std::string bad = dir + "/broken.obj";
+  std::ofstream(bad) << "this is not a mesh\n";
+  const std::string args = " --objects " + quoted(bad) + " " + quoted(shipped_object("box")) +
+                           " --hands cordgrasp_sah --planners cord --repeats 1 --time-limit 20 "
+                           "--quiet --out-dir " + quoted(out);
+  auto r = test::run_cordgrasp("bench" + args + " --tests lift --sheet-size 160x120");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto rows = read_rows(out);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].object, "broken");
+  EXPECT_EQ(rows[0].status, "error");
+  EXPECT_NE(rows[0].error.find("broken.obj"), std::string::npos) << rows[0].error;
+  EXPECT_EQ(rows[1].status, "ok") << rows[1].error;
+  EXPECT_FALSE(rows[1].sim_lift.empty());          // lift was simulated
+  EXPECT_EQ(rows[1].sim_shake, "not_run");         // not requested
+  EXPECT_FALSE(rows[1].sim_outcome.empty());
+  EXPECT_NE(read_file(out + "/summary.md").find("## Errors"), std::string::npos);
+  EXPECT_GT(fs::file_size(out + "/sheets/box.png"), 0u);
+  EXPECT_FALSE(fs::exists(out + "/sheets/broken.png"));
+  // --strict turns error rows into exit code 2 (rows are still written).
+  r = test::run_cordgrasp("bench" + args + " --tests none --no-sheets --strict");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(read_rows(out).size(), 2u);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace cordgrasp

@@ -1,0 +1,117 @@
+// plan.json round trip (tools/cli/plan_json.h).
+#include "cordgrasp/jobs/plan_json.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "cordgrasp/core/error.h"
+#include "cordgrasp/core/hand_io.h"
+#include "test_paths.h"
+
+namespace cordgrasp {
+namespace {
+
+std::string temp_path(const std::string& name) {
+  return (std::filesystem::temp_directory_path() /
+          ("cordgrasp_plan_json_test_" + std::to_string(::getpid()) + "_" + name))
+      .string();
+}
+
+PlanDocument sample_plan(const HandModel& hand) {
+  PlanDocument doc;
+  doc.cordgrasp_version = "0.1.0";
+  doc.hand_name = hand.name;
+  doc.hand_path = "/abs/hand.yaml";
+  doc.urdf_path = "/abs/hand.urdf";
+  doc.object_path = "/abs/box.obj";
+  doc.object_name = "box";
+  doc.object_triangles = 12;
+  doc.planner = "cord";
+  doc.parameters = {{"planner", "cord"}, {"seed", 7}, {"mu", 0.5}};
+  doc.stats.attempts = 3;
+  doc.stats.force_closure = 1;
+  doc.stats.first_force_closure_s = 0.25;
+  Grasp g;
+  g.X_OB = Eigen::Translation3d(0.1, -0.2, 0.3) *
+           Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized());
+  g.X_OG = Eigen::Translation3d(0.0, 0.0, 0.05) * Eigen::AngleAxisd(2.5, Eigen::Vector3d::UnitY());
+  g.q = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(hand.joints.size()));
+  g.q_preshape = g.q;
+  for (size_t j = 0; j < hand.joints.size(); ++j)
+    if (hand.joints[j].is_moving()) g.q[static_cast<Eigen::Index>(j)] = 0.01 * (j + 1);
+  Contact c;
+  c.link = static_cast<int>(hand.links.size()) - 1;
+  c.p_O = {0.01, 0.02, 0.03};
+  c.n_O = Eigen::Vector3d(1, 1, 0).normalized();
+  g.contacts = {c};
+  g.force_closure = true;
+  g.epsilon = 0.0123;
+  g.alpha_rad = 0.2;
+  g.chi_m2 = 1.5e-4;
+  g.region_rank = 4;
+  g.times.finger_s = 0.004;
+  doc.grasps = {g};
+  return doc;
+}
+
+TEST(PlanJson, RoundTripsEveryField) {
+  const HandModel hand = load_hand("parallel_gripper");
+  const PlanDocument doc = sample_plan(hand);
+  const std::string path = temp_path("roundtrip.json");
+  write_plan_file(path, doc, hand);
+  const nlohmann::json j = read_plan_json(path);
+  EXPECT_EQ(plan_hand_path(j), "/abs/hand.yaml");
+  EXPECT_EQ(plan_object_path(j), "/abs/box.obj");
+  const PlanDocument back = plan_from_json(j, hand);
+  EXPECT_EQ(back.hand_name, hand.name);
+  EXPECT_EQ(back.planner, "cord");
+  EXPECT_EQ(back.parameters["seed"], 7);
+  EXPECT_EQ(back.stats.attempts, 3);
+  ASSERT_TRUE(back.stats.first_force_closure_s.has_value());
+  ASSERT_EQ(back.grasps.size(), 1u);
+  const Grasp& a = doc.grasps[0];
+  const Grasp& b = back.grasps[0];
+  EXPECT_TRUE(b.X_OB.isApprox(a.X_OB, 1e-12));
+  EXPECT_TRUE(b.X_OG.isApprox(a.X_OG, 1e-12));
+  EXPECT_TRUE(b.q.isApprox(a.q, 1e-15));
+  ASSERT_EQ(b.contacts.size(), 1u);
+  EXPECT_EQ(b.contacts[0].link, a.contacts[0].link);
+  EXPECT_TRUE(b.contacts[0].p_O.isApprox(a.contacts[0].p_O, 1e-15));
+  EXPECT_TRUE(b.contacts[0].n_O.isApprox(a.contacts[0].n_O, 1e-15));
+  EXPECT_EQ(b.epsilon, a.epsilon);
+  EXPECT_EQ(b.alpha_rad, a.alpha_rad);
+  EXPECT_EQ(b.chi_m2, a.chi_m2);
+  EXPECT_EQ(b.region_rank, a.region_rank);
+  EXPECT_EQ(b.times.finger_s, a.times.finger_s);
+  std::filesystem::remove(path);
+}
+
+TEST(PlanJson, RefusesAPlanMadeForAnotherHand) {
+  const HandModel gripper = load_hand("parallel_gripper");
+  const HandModel sah = load_hand("cordgrasp_sah");
+  const nlohmann::json j = plan_to_json(sample_plan(gripper), gripper);
+  try {
+    plan_from_json(j, sah);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("parallel_gripper"), std::string::npos) << e.what();
+  }
+}
+
+TEST(PlanJson, ReadNamesTheFileWhenMissingOrNotAPlan) {
+  EXPECT_THROW(read_plan_json(temp_path("missing.json")), InputError);
+  const std::string path = temp_path("not_a_plan.json");
+  std::ofstream(path) << "{\"format\": \"something-else\"}";
+  try {
+    read_plan_json(path);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace cordgrasp

@@ -1,0 +1,62 @@
+#include "options.h"
+
+namespace cordgrasp::cli {
+
+void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
+  cmd->add_option("--planner", p.planner, "cord (Li et al. 2015) or generic (Simox baseline)")
+      ->check(CLI::IsMember({"cord", "generic"}))
+      ->capture_default_str();
+  cmd->add_option("--grasps,-n", p.grasps, "Stop after this many force-closure grasps")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--time-limit", p.time_limit_s, "Wall-clock limit of the plan [s]")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--seed", p.seed, "Seed of every random choice")->capture_default_str();
+  cmd->add_option("--mu", p.mu, "Friction coefficient of the wrench space and the physics")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--soft-finger-radius", p.soft_finger_radius_m,
+                  "Contact patch radius for torsional friction [m]; 0 = point contacts "
+                  "(default: the hand's soft_finger_radius_m, 5 mm for the grippers)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--side-cords", p.side_cords,
+                  "Cord: a scanned cord that fails: empty (missed object scores as empty), "
+                  "discard (spec 4.5) or shrink (spec 11.6)")
+      ->check(CLI::IsMember({"empty", "discard", "shrink"}))
+      ->capture_default_str();
+  cmd->add_option("--quality", p.quality,
+                  "textbook (real mu, eps = origin to hull) or simox (compat quirks, spec 8)")
+      ->check(CLI::IsMember({"textbook", "simox"}))
+      ->capture_default_str();
+  cmd->add_option("--units", p.units, "Units of the object file: m, mm or auto")
+      ->check(CLI::IsMember({"m", "mm", "auto"}))
+      ->capture_default_str();
+  cmd->add_option("--sets", p.cord_sets, "Cord: valid sets to sample before local improvement")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_flag_callback(
+      "--no-local-improvement", [&p]() { p.cord_local_improvement = false; },
+      "Cord: skip the local improvement of the sampled sets");
+}
+
+void add_picture_options(CLI::App& cmd, PictureOptions& o) {
+  cmd.add_option("--view", o.view,
+                     "Viewpoint: iso, front, side, top or approach (default: iso; approach for "
+                     "--regions)")
+      ->check(CLI::IsMember({"iso", "front", "side", "top", "approach"}));
+  cmd.add_option("--approach", o.approach,
+                 "Viewing direction x,y,z for --view approach (default: the grasp's approach)");
+  cmd.add_option("--size", o.size, "Image size WxH in pixels")->capture_default_str();
+  cmd.add_option("--supersample", o.supersample, "Anti-aliasing: supersampling factor 1..4")
+      ->check(CLI::Range(1, 4))
+      ->capture_default_str();
+  cmd.add_option("--ground", o.ground, "Under the scene: shadow, grid or none")
+      ->check(CLI::IsMember({"shadow", "grid", "none"}))
+      ->capture_default_str();
+  cmd.add_option("--caption", o.caption, "Caption text instead of the default one");
+  cmd.add_flag("--no-caption", o.no_caption, "No caption line");
+  cmd.add_flag("--ortho", o.orthographic, "Orthographic instead of perspective projection");
+}
+
+}  // namespace cordgrasp::cli

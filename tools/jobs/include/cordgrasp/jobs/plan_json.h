@@ -1,0 +1,66 @@
+#pragma once
+// plan.json: what `cordgrasp plan` writes and `validate`, `render` and `run` read back.
+//
+// Layout (format_version 1), all lengths in meters, angles in radians:
+//   format: "cordgrasp-plan", format_version: 1, cordgrasp_version
+//   inputs: {hand: {name, path, urdf_path}, object: {path, name, units, triangles}}
+//   parameters: {planner, grasps, time_limit_s, seed, mu, quality, cone_edges, finger{..},
+//                cord{..} (cord planner)}
+//   stats: {regions, regions_processed, attempts, force_closure, no_contact, one_contact,
+//           cannot_retreat, not_force_closure, setup_s, exploration_s, finger_s, quality_s,
+//           total_s, first_force_closure_s (null if none), timed_out}
+//   grasps: [{hand_pose: {position_m: [x,y,z], quaternion_wxyz: [w,x,y,z]}  (root link in the
+//             object frame), gcp_pose: {same, GCP in the object frame},
+//             joints: {name: value} (after closing), preshape_joints: {name: value},
+//             contacts: [{link, point_m, normal}] (object frame, normal out of the object),
+//             force_closure, epsilon, alpha_rad, chi_m2 (null: generic), region_rank (null),
+//             region (null: generic; layout of region_json.h: cords, P1, P_l, P_r, ...),
+//             timings_s: {exploration, finger, quality}}]
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cordgrasp/core/grasp.h"
+#include "cordgrasp/core/grasp_plan.h"
+#include "cordgrasp/core/hand_model.h"
+
+namespace cordgrasp {
+
+/// Everything plan.json holds besides the grasps' raw joint vectors.
+struct PlanDocument {
+  std::string cordgrasp_version;
+  std::string hand_name;    ///< HandModel::name
+  std::string hand_path;    ///< absolute path of the hand description file
+  std::string urdf_path;    ///< absolute path of its URDF
+  std::string object_path;  ///< absolute path of the object mesh
+  std::string object_name;
+  std::string object_units = "m";  ///< as given to --units (m, mm or auto)
+  int object_triangles = 0;
+  std::string planner = "cord";                          ///< cord or generic
+  nlohmann::json parameters = nlohmann::json::object();  ///< every parameter, as written
+  PlanStats stats;
+  std::vector<Grasp> grasps;
+};
+
+/// JSON of a plan (layout above); joint and link names come from `hand`.
+nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand);
+
+/// Writes plan_to_json() to `path` atomically (temp file + rename). @throws InputError.
+void write_plan_file(const std::string& path, const PlanDocument& plan, const HandModel& hand);
+
+/// Parses plan.json text from `path`. @throws InputError naming the file (missing, not JSON,
+/// not a cordgrasp plan, unsupported format_version).
+nlohmann::json read_plan_json(const std::string& path);
+
+/// Hand description path recorded in a plan (to load the hand before plan_from_json).
+std::string plan_hand_path(const nlohmann::json& plan);
+
+/// Object mesh path recorded in a plan.
+std::string plan_object_path(const nlohmann::json& plan);
+
+/// Decodes a plan for `hand`. @throws InputError when the plan was made for another hand
+/// (name differs) or names a joint or link the hand does not have.
+PlanDocument plan_from_json(const nlohmann::json& plan, const HandModel& hand);
+
+}  // namespace cordgrasp

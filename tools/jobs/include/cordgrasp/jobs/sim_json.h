@@ -1,0 +1,52 @@
+#pragma once
+// sim.json: what `cordgrasp validate` and `run` write (a SimDocument, validate_plan.h).
+//
+// Layout (format_version 1), meters, radians, seconds, kilograms:
+//   format: "cordgrasp-sim", format_version: 1, cordgrasp_version, backend (Bullet version)
+//   inputs: {plan, hand: {name, path}, object: {path, name, units, triangles}, plan_seed}
+//   parameters: {tests, mu, soft_finger_radius_m, time_step_s, solver_iterations, erp, ... every
+//                SimParams field (sim_params_to_json)}
+//   object: {shape, parts, mass_kg, volume_m3, closed, com_m, principal_inertia_kgm2,
+//            decomposition_s}
+//   grasps: [{index (in the plan), outcome, failed_phase (null when held), detail, epsilon,
+//             force_closure, wall_time_s, trials (with --trials N > 1: {count, held,
+//             outcomes: [trial 0 = the plan as written, then perturbed copies]}),
+//             phases: [{name, outcome, detail, translation_m, rotation_rad, max_translation_m,
+//                       in_contact, contact_count, max_contact_count, max_penetration_m,
+//                       joint_efforts: {joint: N·m or N}, sim_time_s, wall_time_s, steps}]}]
+//   summary: {grasps, held, outcomes: {held, slipped, dropped, unstable}, wall_time_s,
+//             trials, held_trials (over every trial of every grasp)}
+//   parameters also: trials, trial_offset_m, trial_turn_rad, trial_seed
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cordgrasp/core/grasp_perturbation.h"
+#include "cordgrasp/core/hand_model.h"
+#include "cordgrasp/core/mesh.h"
+#include "cordgrasp/sim/validate_grasp.h"
+#include "cordgrasp/jobs/validate_plan.h"
+
+namespace cordgrasp {
+
+/// Every SimParams field as JSON (units in the names).
+nlohmann::json sim_params_to_json(const SimParams& params);
+
+/// One SimResult as JSON (joint names from `hand`).
+nlohmann::json sim_result_to_json(const SimResult& result, const HandModel& hand);
+
+/// JSON of a validation (layout above).
+nlohmann::json sim_to_json(const SimDocument& doc, const HandModel& hand);
+
+/// Writes sim_to_json() atomically. @throws InputError.
+void write_sim_file(const std::string& path, const SimDocument& doc, const HandModel& hand);
+
+/// Parses sim.json. @throws InputError naming the file (missing, not JSON, not a sim file).
+nlohmann::json read_sim_json(const std::string& path);
+
+}  // namespace cordgrasp

@@ -1,0 +1,84 @@
+#pragma once
+// Validating a plan in physics: every grasp (or the first K) through the requested tests, with
+// repeated perturbed trials; the one path that `validate`, `run` and `bench` share.
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cordgrasp/core/grasp_perturbation.h"
+#include "cordgrasp/core/hand_model.h"
+#include "cordgrasp/core/mesh.h"
+#include "cordgrasp/jobs/plan_json.h"
+#include "cordgrasp/sim/validate_grasp.h"
+
+namespace cordgrasp {
+
+/// Result of validating (some of) the grasps of a plan.
+struct SimDocument {
+  std::string plan_path;
+  std::string hand_name;
+  std::string hand_path;
+  std::string object_path;
+  std::string object_name;
+  std::string object_units = "m";
+  int object_triangles = 0;
+  std::optional<std::uint64_t> plan_seed;  ///< the plan's seed (the simulation draws none)
+  SimParams params;
+  SimTests tests;
+  std::vector<int> grasp_indices;  ///< index of each result's grasp in the plan
+  std::vector<SimResult> results;
+  std::vector<Grasp> grasps;       ///< the validated grasps (for ε, force closure)
+  double wall_time_s = 0.0;
+  /// Repeated trials (add_perturbed_trials): per grasp, the outcome of every trial; trial 0 is
+  /// results[k]. Empty when each grasp was simulated once.
+  std::vector<std::vector<Outcome>> trial_outcomes;
+  PerturbationParams trial_perturbation;
+  std::uint64_t trial_seed = 1;
+};
+
+/// Called after each grasp: (done, total, result).
+using ValidateProgress = std::function<void(int, int, const SimResult&)>;
+
+/// Gives the phase hook (may be empty) for the grasp with this index in the plan.
+using GraspPhaseHooks = std::function<PhaseHook(int grasp_index)>;
+
+/// Validates the first `max_grasps` grasps of `plan` (all when < 0) on `mesh` with `hand`;
+/// `hooks` (optional) sees the world at every phase end of each grasp (snapshots).
+SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const Mesh& mesh,
+                          const SimParams& params, const SimTests& tests, int max_grasps = -1,
+                          const ValidateProgress& progress = {},
+                          const GraspPhaseHooks& hooks = {});
+
+/// Held / not-held of a marginal grasp is chaotic (docs/physics.md): validates every grasp of
+/// `doc` `trials` − 1 more times with the hand moved and turned slightly (perturbed_grasp,
+/// seed trial_seed + 1000·k + t for trial t of grasp k) and records all outcomes in
+/// doc.trial_outcomes; `progress` is called after each grasp's trials.
+/// @throws std::invalid_argument when trials is not in [1, 1000].
+void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const HandModel& hand,
+                          const Mesh& mesh, int trials, const PerturbationParams& perturbation,
+                          std::uint64_t seed, const ValidateProgress& progress = {});
+
+/// How many of `outcomes` are held.
+int count_held(const std::vector<Outcome>& outcomes);
+
+/// Trials of a grasp that held: "held in 3 / 5 trials".
+std::string trials_line(const std::vector<Outcome>& outcomes);
+
+/// "held (lift held, shake held, gravity6 held) mass 0.12 kg, 0.41 s"
+std::string sim_result_line(const SimResult& result);
+
+/// Grasps that did not hold, by the first phase that failed (settle, close, lift, shake,
+/// gravity6, in that order), and grasps whose preshape hand overlapped the object.
+struct FailureCounts {
+  std::vector<std::pair<std::string, int>> by_phase;
+  int preshape_overlaps = 0;
+};
+FailureCounts count_failures(const std::vector<SimResult>& results);
+
+/// "not held by phase: settle 0, close 2, lift 1, shake 0, gravity6 0; preshape overlaps 1"
+std::string failures_line(const std::vector<SimResult>& results);
+
+}  // namespace cordgrasp

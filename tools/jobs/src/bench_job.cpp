@@ -1,0 +1,663 @@
+#include "cordgrasp/jobs/bench_job.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "cordgrasp/core/atomic_file.h"
+#include "cordgrasp/core/error.h"
+#include "cordgrasp/core/hand_io.h"
+#include "cordgrasp/core/mesh_io.h"
+#include "cordgrasp/jobs/sim_json.h"
+#include "cordgrasp/jobs/text_format.h"
+
+namespace cordgrasp {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Quantities: 9 significant digits (exact enough to compare runs); times: microseconds.
+std::string number(double v) { return format_number(v, "%.9g"); }
+std::string seconds(double v) { return format_number(v, "%.6f"); }
+std::string optional_number(const std::optional<double>& v) { return v ? number(*v) : ""; }
+std::string optional_seconds(const std::optional<double>& v) { return v ? seconds(*v) : ""; }
+
+std::string csv_quote(const std::string& cell) {
+  if (cell.find_first_of(",\"\n\r") == std::string::npos) return cell;
+  std::string out = "\"";
+  for (char c : cell) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
+// RFC 4180 records (quoted cells may hold commas, quotes and newlines).
+std::vector<std::vector<std::string>> parse_csv_records(const std::string& text,
+                                                        const std::string& what) {
+  std::vector<std::vector<std::string>> records;
+  std::vector<std::string> record;
+  std::string cell;
+  bool quoted = false, any = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
+        cell += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        cell += c;
+      }
+      continue;
+    }
+    if (c == '"') {
+      quoted = true;
+      any = true;
+    } else if (c == ',') {
+      record.push_back(cell);
+      cell.clear();
+      any = true;
+    } else if (c == '\n' || c == '\r') {
+      if (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
+      if (any || !cell.empty()) {
+        record.push_back(cell);
+        records.push_back(record);
+      }
+      record.clear();
+      cell.clear();
+      any = false;
+    } else {
+      cell += c;
+      any = true;
+    }
+  }
+  if (quoted) throw InputError(what + ": unterminated quoted cell");
+  if (any || !cell.empty()) {
+    record.push_back(cell);
+    records.push_back(record);
+  }
+  return records;
+}
+
+double parse_double(const std::string& s, const std::string& what) {
+  try {
+    size_t used = 0;
+    const double v = std::stod(s, &used);
+    if (used != s.size()) throw std::invalid_argument("trailing text");
+    return v;
+  } catch (const std::exception&) {
+    throw InputError(what + ": '" + s + "' is not a number");
+  }
+}
+
+long long parse_integer(const std::string& s, const std::string& what) {
+  try {
+    size_t used = 0;
+    const long long v = std::stoll(s, &used);
+    if (used != s.size()) throw std::invalid_argument("trailing text");
+    return v;
+  } catch (const std::exception&) {
+    throw InputError(what + ": '" + s + "' is not an integer");
+  }
+}
+
+std::optional<double> parse_optional_double(const std::string& s, const std::string& what) {
+  if (s.empty()) return std::nullopt;
+  return parse_double(s, what);
+}
+
+bool is_mesh_file(const fs::path& p) {
+  std::string ext = p.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) {
+    return static_cast<char>(std::tolower(c));
+  });
+  return ext == ".obj" || ext == ".stl" || ext == ".ply" || ext == ".off";
+}
+
+// Mean, sample SD (0 for one value), median.
+struct Stats {
+  int n = 0;
+  double mean = 0.0, sd = 0.0, median = 0.0;
+};
+
+Stats stats_of(std::vector<double> v) {
+  Stats s;
+  s.n = static_cast<int>(v.size());
+  if (v.empty()) return s;
+  std::sort(v.begin(), v.end());
+  double sum = 0.0;
+  for (double x : v) sum += x;
+  s.mean = sum / s.n;
+  double ss = 0.0;
+  for (double x : v) ss += (x - s.mean) * (x - s.mean);
+  s.sd = s.n > 1 ? std::sqrt(ss / (s.n - 1)) : 0.0;
+  s.median = s.n % 2 ? v[s.n / 2] : 0.5 * (v[s.n / 2 - 1] + v[s.n / 2]);
+  return s;
+}
+
+
+// "| 10/10 | 100 % | ..." cells of one group of rows.
+std::string summary_cells(const std::vector<const BenchRow*>& rows) {
+  int ok = 0, no_grasp = 0, error = 0, simulated = 0, held = 0;
+  std::vector<double> first_fc, total, alpha, epsilon, processed;
+  for (const BenchRow* r : rows) {
+    ok += r->status == "ok";
+    no_grasp += r->status == "no_grasp";
+    error += r->status == "error";
+    if (r->status == "ok") {
+      if (r->first_fc_s) first_fc.push_back(*r->first_fc_s);
+      if (r->alpha_rad) alpha.push_back(*r->alpha_rad);
+      if (r->epsilon) epsilon.push_back(*r->epsilon);
+      if (r->region_rank) processed.push_back(r->regions_processed);
+    }
+    if (r->status != "error") total.push_back(r->total_s);
+    if (!r->sim_outcome.empty()) {
+      ++simulated;
+      held += r->sim_outcome == "held";
+    }
+  }
+  const int n = static_cast<int>(rows.size());
+  const Stats t = stats_of(first_fc), a = stats_of(alpha), e = stats_of(epsilon),
+              tt = stats_of(total);
+  auto or_dash = [](bool have, const std::string& s) { return have ? s : std::string("–"); };
+  std::ostringstream out;
+  out << "| " << n << " | " << ok << " (" << fixed(n ? 100.0 * ok / n : 0.0, 0) << " %) | "
+      << no_grasp << " | " << error << " | " << or_dash(t.n > 0, fixed(t.median, 3)) << " | "
+      << or_dash(t.n > 0, fixed(t.mean, 3)) << " | " << or_dash(t.n > 0, fixed(t.sd, 3)) << " | "
+      << or_dash(tt.n > 0, fixed(tt.mean, 3)) << " | " << or_dash(a.n > 0, fixed(a.mean, 3))
+      << " | " << or_dash(a.n > 0, fixed(a.sd, 3)) << " | "
+      << or_dash(e.n > 0, format_number(e.mean, "%.3g")) << " | "
+      << or_dash(simulated > 0, std::to_string(held) + "/" + std::to_string(simulated) + " (" +
+                                    fixed(simulated ? 100.0 * held / simulated : 0.0, 0) +
+                                    " %)")
+      << " |";
+  return out.str();
+}
+
+const char* kSummaryHeader =
+    "| attempts | FC grasp found | no grasp | error | first FC median [s] | first FC mean [s] "
+    "| first FC sd [s] | total mean [s] | α mean [rad] | α sd [rad] | ε mean | sim held |\n";
+const char* kSummaryRule = "|---|---|---|---|---|---|---|---|---|---|---|---|";
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {};
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+std::uint64_t repeat_seed(std::uint64_t base_seed, int repeat) {
+  return base_seed + static_cast<std::uint64_t>(repeat);
+}
+
+std::vector<std::string> expand_object_args(const std::vector<std::string>& args) {
+  std::vector<std::string> out;
+  for (const std::string& a : args) {
+    std::error_code ec;
+    if (fs::is_directory(a, ec)) {
+      std::vector<std::string> files;
+      for (const auto& e : fs::directory_iterator(a))
+        if (e.is_regular_file() && is_mesh_file(e.path())) files.push_back(e.path().string());
+      if (files.empty())
+        throw InputError("bench: '" + a + "': no mesh files (.obj, .stl, .ply, .off)");
+      std::sort(files.begin(), files.end());
+      out.insert(out.end(), files.begin(), files.end());
+    } else if (fs::exists(a, ec)) {
+      out.push_back(a);
+    } else {
+      throw InputError("bench: '" + a + "': no such file or directory");
+    }
+  }
+  return out;
+}
+
+std::vector<BenchAttempt> bench_attempts(const BenchParams& params) {
+  std::vector<BenchAttempt> out;
+  for (const std::string& object : params.objects)
+    for (const std::string& hand : params.hands)
+      for (const std::string& planner : params.planners)
+        for (int r = 0; r < params.repeats; ++r) {
+          BenchAttempt a;
+          a.index = static_cast<int>(out.size());
+          a.object_path = object;
+          a.hand = hand;
+          a.planner = planner;
+          a.repeat = r;
+          a.seed = repeat_seed(params.seed, r);
+          out.push_back(a);
+        }
+  return out;
+}
+
+std::pair<int, int> parse_shard(const std::string& text) {
+  const size_t slash = text.find('/');
+  try {
+    if (slash == std::string::npos) throw std::invalid_argument("no '/'");
+    size_t used_k = 0, used_n = 0;
+    const int k = std::stoi(text.substr(0, slash), &used_k);
+    const int n = std::stoi(text.substr(slash + 1), &used_n);
+    if (used_k != slash || used_n != text.size() - slash - 1 || n < 1 || k < 1 || k > n)
+      throw std::invalid_argument("range");
+    return {k, n};
+  } catch (const std::exception&) {
+    throw InputError("--shard '" + text + "': expected k/N with 1 <= k <= N");
+  }
+}
+
+std::vector<BenchAttempt> shard_attempts(const std::vector<BenchAttempt>& attempts, int k,
+                                         int n) {
+  std::vector<BenchAttempt> out;
+  for (const BenchAttempt& a : attempts)
+    if (a.index % n == k - 1) out.push_back(a);
+  return out;
+}
+
+const std::vector<std::string>& bench_csv_columns() {
+  static const std::vector<std::string> kColumns = {
+      "attempt",      "object",          "object_path",   "hand",          "planner",
+      "repeat",       "seed",            "status",        "error",         "first_fc_s",
+      "exploration_s", "finger_s",       "quality_s",     "total_s",       "regions",
+      "regions_processed", "finger_attempts", "grasps",   "timed_out",     "epsilon",
+      "alpha_rad",    "chi_m2",          "region_rank",   "sim_lift",      "sim_shake",
+      "sim_gravity6", "sim_outcome",     "sim_wall_s"};
+  return kColumns;
+}
+
+const std::vector<std::string>& bench_timing_columns() {
+  static const std::vector<std::string> kTiming = {"first_fc_s", "exploration_s", "finger_s",
+                                                   "quality_s",  "total_s",       "sim_wall_s"};
+  return kTiming;
+}
+
+std::vector<std::string> bench_row_cells(const BenchRow& r) {
+  return {std::to_string(r.attempt),
+          r.object,
+          r.object_path,
+          r.hand,
+          r.planner,
+          std::to_string(r.repeat),
+          std::to_string(r.seed),
+          r.status,
+          r.error,
+          optional_seconds(r.first_fc_s),
+          seconds(r.exploration_s),
+          seconds(r.finger_s),
+          seconds(r.quality_s),
+          seconds(r.total_s),
+          std::to_string(r.regions),
+          std::to_string(r.regions_processed),
+          std::to_string(r.finger_attempts),
+          std::to_string(r.grasps),
+          r.timed_out ? "1" : "0",
+          optional_number(r.epsilon),
+          optional_number(r.alpha_rad),
+          optional_number(r.chi_m2),
+          r.region_rank ? std::to_string(*r.region_rank) : "",
+          r.sim_lift,
+          r.sim_shake,
+          r.sim_gravity6,
+          r.sim_outcome,
+          optional_seconds(r.sim_wall_s)};
+}
+
+std::string bench_csv(const std::vector<BenchRow>& rows) {
+  std::string out;
+  auto line = [&](const std::vector<std::string>& cells) {
+    for (size_t i = 0; i < cells.size(); ++i) out += (i ? "," : "") + csv_quote(cells[i]);
+    out += '\n';
+  };
+  line(bench_csv_columns());
+  for (const BenchRow& r : rows) line(bench_row_cells(r));
+  return out;
+}
+
+std::vector<BenchRow> parse_bench_csv(const std::string& text, const std::string& what) {
+  const auto records = parse_csv_records(text, what);
+  if (records.empty() || records[0] != bench_csv_columns())
+    throw InputError(what + ": not a cordgrasp bench results.csv (header differs)");
+  std::vector<BenchRow> rows;
+  const size_t columns = bench_csv_columns().size();
+  for (size_t i = 1; i < records.size(); ++i) {
+    const auto& c = records[i];
+    const std::string where = what + ": row " + std::to_string(i);
+    if (c.size() != columns)
+      throw InputError(where + ": " + std::to_string(c.size()) + " cells, expected " +
+                       std::to_string(columns));
+    BenchRow r;
+    r.attempt = static_cast<int>(parse_integer(c[0], where));
+    r.object = c[1];
+    r.object_path = c[2];
+    r.hand = c[3];
+    r.planner = c[4];
+    r.repeat = static_cast<int>(parse_integer(c[5], where));
+    r.seed = static_cast<std::uint64_t>(parse_integer(c[6], where));
+    r.status = c[7];
+    if (r.status != "ok" && r.status != "no_grasp" && r.status != "error")
+      throw InputError(where + ": unknown status '" + r.status + "'");
+    r.error = c[8];
+    r.first_fc_s = parse_optional_double(c[9], where);
+    r.exploration_s = parse_double(c[10], where);
+    r.finger_s = parse_double(c[11], where);
+    r.quality_s = parse_double(c[12], where);
+    r.total_s = parse_double(c[13], where);
+    r.regions = static_cast<int>(parse_integer(c[14], where));
+    r.regions_processed = static_cast<int>(parse_integer(c[15], where));
+    r.finger_attempts = static_cast<int>(parse_integer(c[16], where));
+    r.grasps = static_cast<int>(parse_integer(c[17], where));
+    r.timed_out = c[18] == "1";
+    r.epsilon = parse_optional_double(c[19], where);
+    r.alpha_rad = parse_optional_double(c[20], where);
+    r.chi_m2 = parse_optional_double(c[21], where);
+    if (!c[22].empty()) r.region_rank = static_cast<int>(parse_integer(c[22], where));
+    r.sim_lift = c[23];
+    r.sim_shake = c[24];
+    r.sim_gravity6 = c[25];
+    r.sim_outcome = c[26];
+    r.sim_wall_s = parse_optional_double(c[27], where);
+    rows.push_back(std::move(r));
+  }
+  return rows;
+}
+
+struct BenchInputs::Loaded {
+  std::map<std::string, std::shared_ptr<const Mesh>> meshes;
+  std::map<std::string, std::shared_ptr<const HandModel>> hands;
+  std::map<std::string, std::string> errors;  // "object:path" / "hand:name" → message
+};
+
+BenchInputs::BenchInputs(const BenchParams& params, const std::vector<BenchAttempt>& attempts) {
+  auto loaded = std::make_shared<Loaded>();
+  for (const BenchAttempt& a : attempts) {
+    if (!loaded->meshes.count(a.object_path) && !loaded->errors.count("object:" + a.object_path)) {
+      try {
+        loaded->meshes[a.object_path] =
+            std::make_shared<const Mesh>(load_job_mesh(params.job, a.object_path));
+      } catch (const std::exception& e) {
+        loaded->errors["object:" + a.object_path] = e.what();
+      }
+    }
+    if (!loaded->hands.count(a.hand) && !loaded->errors.count("hand:" + a.hand)) {
+      try {
+        loaded->hands[a.hand] = std::make_shared<const HandModel>(load_hand(a.hand));
+      } catch (const std::exception& e) {
+        loaded->errors["hand:" + a.hand] = e.what();
+      }
+    }
+  }
+  loaded_ = loaded;
+}
+
+std::shared_ptr<const Mesh> BenchInputs::mesh(const std::string& path,
+                                              std::string* error) const {
+  const auto it = loaded_->meshes.find(path);
+  if (it != loaded_->meshes.end()) return it->second;
+  const auto e = loaded_->errors.find("object:" + path);
+  if (error) *error = e != loaded_->errors.end() ? e->second : "object '" + path + "' not loaded";
+  return nullptr;
+}
+
+const HandModel* BenchInputs::hand(const std::string& name, std::string* error) const {
+  const auto it = loaded_->hands.find(name);
+  if (it != loaded_->hands.end()) return it->second.get();
+  const auto e = loaded_->errors.find("hand:" + name);
+  if (error) *error = e != loaded_->errors.end() ? e->second : "hand '" + name + "' not loaded";
+  return nullptr;
+}
+
+BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& params,
+                              const BenchInputs& inputs) {
+  BenchResult result;
+  BenchRow& row = result.row;
+  row.attempt = attempt.index;
+  row.object = fs::path(attempt.object_path).stem().string();
+  row.object_path = attempt.object_path;
+  row.hand = attempt.hand;
+  row.planner = attempt.planner;
+  row.repeat = attempt.repeat;
+  row.seed = attempt.seed;
+  try {
+    std::string error;
+    const std::shared_ptr<const Mesh> mesh = inputs.mesh(attempt.object_path, &error);
+    if (!mesh) throw InputError(error);
+    const HandModel* hand = inputs.hand(attempt.hand, &error);
+    if (!hand) throw InputError(error);
+    PlanJobParams job = params.job;
+    job.planner = attempt.planner;
+    job.seed = attempt.seed;
+    const PlanDocument plan = plan_job(job, *mesh, attempt.object_path, *hand);
+    const PlanStats& s = plan.stats;
+    row.first_fc_s = s.first_force_closure_s;
+    row.exploration_s = s.exploration_s;
+    row.finger_s = s.finger_s;
+    row.quality_s = s.quality_s;
+    row.total_s = s.total_s;
+    row.regions = s.regions;
+    row.regions_processed = s.regions_processed;
+    row.finger_attempts = s.attempts;
+    row.grasps = static_cast<int>(plan.grasps.size());
+    row.timed_out = s.timed_out;
+    row.status = plan.grasps.empty() ? "no_grasp" : "ok";
+    if (plan.grasps.empty()) return result;
+    const Grasp& g = plan.grasps.front();
+    row.epsilon = g.epsilon;
+    row.alpha_rad = g.alpha_rad;
+    row.chi_m2 = g.chi_m2;
+    row.region_rank = g.region_rank;
+    result.first_grasp = g;
+    if (params.tests == "none") return result;
+    SimParams sim;
+    sim.contact = plan_contact_model(plan);  // one friction model for planner and physics
+    sim.decomposition_cache_dir = params.sim_cache_dir;
+    const SimDocument doc =
+        validate_plan(plan, *hand, *mesh, sim, sim_tests_from_string(params.tests), 1);
+    if (!doc.results.empty()) {
+      const SimResult& r = doc.results.front();
+      auto phase = [&](const char* name) {
+        const PhaseResult* p = r.phase(name);
+        return std::string(p ? to_string(p->outcome) : to_string(Outcome::kNotRun));
+      };
+      row.sim_lift = phase("lift");
+      row.sim_shake = phase("shake");
+      row.sim_gravity6 = phase("gravity6");
+      row.sim_outcome = to_string(r.outcome);
+      row.sim_wall_s = r.wall_time_s;
+    }
+  } catch (const std::exception& e) {
+    row.status = "error";
+    row.error = e.what();
+    result.first_grasp.reset();
+  }
+  return result;
+}
+
+std::vector<BenchResult> run_bench_attempts(const std::vector<BenchAttempt>& attempts,
+                                            const BenchParams& params, const BenchInputs& inputs,
+                                            int jobs, const BenchProgress& progress) {
+  std::vector<BenchResult> results(attempts.size());
+  std::atomic<size_t> next{0};
+  std::mutex mutex;
+  int done = 0;
+  const int total = static_cast<int>(attempts.size());
+  auto worker = [&]() {
+    for (size_t i = next++; i < attempts.size(); i = next++) {
+      results[i] = run_bench_attempt(attempts[i], params, inputs);
+      const std::lock_guard<std::mutex> lock(mutex);
+      ++done;
+      if (progress) progress(done, total, results[i].row);
+    }
+  };
+  const int threads = std::max(1, std::min(jobs, total));
+  if (threads == 1) {
+    worker();
+    return results;
+  }
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+  for (std::thread& t : pool) t.join();
+  return results;
+}
+
+nlohmann::json bench_params_to_json(const BenchParams& p) {
+  const PlanJobParams& j = p.job;
+  return {{"hands", p.hands},
+          {"objects", p.objects},
+          {"planners", p.planners},
+          {"repeats", p.repeats},
+          {"seed", p.seed},
+          {"grasps", j.grasps},
+          {"time_limit_s", j.time_limit_s},
+          {"mu", j.mu},
+          {"soft_finger_radius_m", j.soft_finger_radius_m ? nlohmann::json(*j.soft_finger_radius_m)
+                                                          : nlohmann::json("hand default")},
+          {"side_cords", j.side_cords},
+          {"quality", j.quality},
+          {"units", j.units},
+          {"sets", j.cord_sets},
+          {"local_improvement", j.cord_local_improvement},
+          {"tests", p.tests}};
+}
+
+std::vector<BenchRow> merge_bench_rows(const std::vector<std::vector<BenchRow>>& parts) {
+  std::vector<BenchRow> rows;
+  for (const auto& part : parts) rows.insert(rows.end(), part.begin(), part.end());
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const BenchRow& a, const BenchRow& b) { return a.attempt < b.attempt; });
+  for (size_t i = 1; i < rows.size(); ++i)
+    if (rows[i].attempt == rows[i - 1].attempt)
+      throw InputError("merge: attempt " + std::to_string(rows[i].attempt) + " (" +
+                       rows[i].object + ", " + rows[i].hand + ", " + rows[i].planner +
+                       ", repeat " + std::to_string(rows[i].repeat) +
+                       ") appears twice (the same shard given twice, or overlapping shards?)");
+  return rows;
+}
+
+std::string bench_summary_markdown(const std::vector<BenchRow>& rows,
+                                   const BenchSummaryInfo& info) {
+  std::ostringstream out;
+  out << "# cordgrasp bench summary\n\n";
+  out << "- command: `" << info.command << "`\n";
+  out << "- machine: " << info.machine << "\n";
+  out << "- attempts: " << rows.size() << " of " << info.attempts_total;
+  if (!info.shard.empty()) out << " (shard " << info.shard << ")";
+  out << "\n- physics tests on each attempt's first grasp: "
+      << (info.tests.empty() ? "none" : info.tests) << "\n";
+  out << "- times are wall-clock seconds; α (skewness, spec §9) and ε of the first force-closure "
+         "grasp; first FC, α and ε over the attempts that found a grasp; sim held = first "
+         "grasps that held through every test / first grasps simulated.\n\n";
+
+  // Groups in attempt order.
+  std::vector<std::string> keys;
+  std::map<std::string, std::vector<const BenchRow*>> groups;
+  std::vector<std::string> totals_keys;
+  std::map<std::string, std::vector<const BenchRow*>> totals;
+  std::map<std::string, std::vector<std::string>> key_cells;
+  for (const BenchRow& r : rows) {
+    const std::string key = r.object_path + '\n' + r.hand + '\n' + r.planner;
+    if (!groups.count(key)) {
+      keys.push_back(key);
+      key_cells[key] = {r.object, r.hand, r.planner};
+    }
+    groups[key].push_back(&r);
+    const std::string tkey = r.hand + '\n' + r.planner;
+    if (!totals.count(tkey)) {
+      totals_keys.push_back(tkey);
+      key_cells[tkey] = {r.hand, r.planner};
+    }
+    totals[tkey].push_back(&r);
+  }
+  out << "## Per object, hand and planner\n\n| object | hand | planner " << kSummaryHeader
+      << "|---|---|---" << kSummaryRule << "\n";
+  for (const std::string& k : keys) {
+    const auto& c = key_cells[k];
+    out << "| " << c[0] << " | " << c[1] << " | " << c[2] << " " << summary_cells(groups[k])
+        << "\n";
+  }
+  out << "\n## Totals per hand and planner (all objects)\n\n| hand | planner " << kSummaryHeader
+      << "|---|---" << kSummaryRule << "\n";
+  for (const std::string& k : totals_keys) {
+    const auto& c = key_cells[k];
+    out << "| " << c[0] << " | " << c[1] << " " << summary_cells(totals[k]) << "\n";
+  }
+  std::vector<const BenchRow*> errors;
+  for (const BenchRow& r : rows)
+    if (r.status == "error") errors.push_back(&r);
+  if (!errors.empty()) {
+    out << "\n## Errors\n\n";
+    for (const BenchRow* r : errors)
+      out << "- attempt " << r->attempt << " (" << r->object << ", " << r->hand << ", "
+          << r->planner << ", repeat " << r->repeat << "): " << r->error << "\n";
+  }
+  if (!info.sheets.empty()) {
+    out << "\n## Contact sheets (best first grasp by ε per hand and planner)\n\n";
+    for (const std::string& s : info.sheets) out << "- [" << s << "](" << s << ")\n";
+  }
+  return out.str();
+}
+
+void write_bench_outputs(const std::string& out_dir, const std::vector<BenchRow>& rows,
+                         const nlohmann::json& bench_json, const BenchSummaryInfo& info) {
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec) throw InputError("bench: cannot create '" + out_dir + "': " + ec.message());
+  write_file_atomically((fs::path(out_dir) / "results.csv").string(), bench_csv(rows));
+  write_file_atomically((fs::path(out_dir) / "bench.json").string(), bench_json.dump(2) + "\n");
+  write_file_atomically((fs::path(out_dir) / "summary.md").string(),
+                        bench_summary_markdown(rows, info));
+}
+
+std::string machine_description() {
+  const unsigned cores = std::thread::hardware_concurrency();
+  std::string model = "unknown CPU";
+  std::istringstream cpuinfo(read_text("/proc/cpuinfo"));
+  for (std::string line; std::getline(cpuinfo, line);) {
+    if (line.rfind("model name", 0) == 0) {
+      const size_t colon = line.find(':');
+      if (colon != std::string::npos) {
+        model = line.substr(colon + 1);
+        model.erase(0, model.find_first_not_of(" \t"));
+      }
+      break;
+    }
+  }
+  return std::to_string(cores) + " cores (nproc), " + model;
+}
+
+std::string process_command_line() {
+  const std::string raw = read_text("/proc/self/cmdline");
+  std::string out;
+  size_t start = 0;
+  while (start < raw.size()) {
+    size_t end = raw.find('\0', start);
+    if (end == std::string::npos) end = raw.size();
+    std::string arg = raw.substr(start, end - start);
+    if (start == 0) arg = fs::path(arg).filename().string();  // "cordgrasp", not the build path
+    const bool plain = !arg.empty() && arg.find_first_not_of(
+                                           "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                           "0123456789-_./,=:+") == std::string::npos;
+    if (!out.empty()) out += ' ';
+    if (plain) {
+      out += arg;
+    } else {
+      out += '\'';
+      for (char c : arg) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+      out += '\'';
+    }
+    start = end + 1;
+  }
+  return out;
+}
+
+}  // namespace cordgrasp

@@ -1,0 +1,234 @@
+#include "cordgrasp/jobs/plan_json.h"
+
+#include "cordgrasp/jobs/region_json.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "cordgrasp/core/atomic_file.h"
+#include "cordgrasp/core/error.h"
+#include "json_util.h"
+
+namespace cordgrasp {
+
+namespace {
+
+constexpr const char* kFormat = "cordgrasp-plan";
+constexpr int kFormatVersion = 1;
+
+nlohmann::json pose_json(const Eigen::Isometry3d& X) {
+  const Eigen::Quaterniond q(X.linear());
+  return {{"position_m", to_json(Eigen::Vector3d(X.translation()))},
+          {"quaternion_wxyz", {q.w(), q.x(), q.y(), q.z()}}};
+}
+
+Eigen::Isometry3d pose_from_json(const nlohmann::json& j) {
+  const auto& q = j.at("quaternion_wxyz");
+  Eigen::Quaterniond quat(q.at(0).get<double>(), q.at(1).get<double>(), q.at(2).get<double>(),
+                          q.at(3).get<double>());
+  Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
+  X.linear() = quat.normalized().toRotationMatrix();
+  X.translation() = vec3_from_json(j.at("position_m"));
+  return X;
+}
+
+nlohmann::json joints_json(const HandModel& hand, const Eigen::VectorXd& q) {
+  nlohmann::json out = nlohmann::json::object();
+  for (size_t j = 0; j < hand.joints.size(); ++j)
+    if (hand.joints[j].is_moving() && static_cast<Eigen::Index>(j) < q.size())
+      out[hand.joints[j].name] = q[static_cast<Eigen::Index>(j)];
+  return out;
+}
+
+Eigen::VectorXd joints_from_json(const HandModel& hand, const nlohmann::json& j,
+                                 const std::string& what) {
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(hand.joints.size()));
+  for (const auto& [name, value] : j.items()) {
+    const int index = find_joint(hand, name);
+    if (index < 0)
+      throw InputError("plan: " + what + " names joint '" + name + "' that hand '" + hand.name +
+                       "' does not have");
+    q[index] = value.get<double>();
+  }
+  return q;
+}
+
+nlohmann::json optional_json(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
+nlohmann::json stats_json(const PlanStats& s) {
+  return {{"regions", s.regions},
+          {"regions_processed", s.regions_processed},
+          {"attempts", s.attempts},
+          {"force_closure", s.force_closure},
+          {"no_contact", s.no_contact},
+          {"one_contact", s.one_contact},
+          {"cannot_retreat", s.cannot_retreat},
+          {"not_force_closure", s.not_force_closure},
+          {"setup_s", s.setup_s},
+          {"exploration_s", s.exploration_s},
+          {"finger_s", s.finger_s},
+          {"quality_s", s.quality_s},
+          {"total_s", s.total_s},
+          {"first_force_closure_s", optional_json(s.first_force_closure_s)},
+          {"timed_out", s.timed_out}};
+}
+
+PlanStats stats_from_json(const nlohmann::json& j) {
+  PlanStats s;
+  s.regions = j.value("regions", 0);
+  s.regions_processed = j.value("regions_processed", 0);
+  s.attempts = j.value("attempts", 0);
+  s.force_closure = j.value("force_closure", 0);
+  s.no_contact = j.value("no_contact", 0);
+  s.one_contact = j.value("one_contact", 0);
+  s.cannot_retreat = j.value("cannot_retreat", 0);
+  s.not_force_closure = j.value("not_force_closure", 0);
+  s.setup_s = j.value("setup_s", 0.0);
+  s.exploration_s = j.value("exploration_s", 0.0);
+  s.finger_s = j.value("finger_s", 0.0);
+  s.quality_s = j.value("quality_s", 0.0);
+  s.total_s = j.value("total_s", 0.0);
+  if (j.contains("first_force_closure_s") && !j["first_force_closure_s"].is_null())
+    s.first_force_closure_s = j["first_force_closure_s"].get<double>();
+  s.timed_out = j.value("timed_out", false);
+  return s;
+}
+
+}  // namespace
+
+nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand) {
+  nlohmann::json grasps = nlohmann::json::array();
+  for (const Grasp& g : plan.grasps) {
+    nlohmann::json contacts = nlohmann::json::array();
+    for (const Contact& c : g.contacts) {
+      const std::string link = c.link >= 0 && c.link < static_cast<int>(hand.links.size())
+                                   ? hand.links[static_cast<size_t>(c.link)].name
+                                   : std::string();
+      contacts.push_back({{"link", link}, {"point_m", to_json(c.p_O)}, {"normal", to_json(c.n_O)}});
+    }
+    grasps.push_back(
+        {{"hand_pose", pose_json(g.X_OB)},
+         {"gcp_pose", pose_json(g.X_OG)},
+         {"joints", joints_json(hand, g.q)},
+         {"preshape_joints", joints_json(hand, g.q_preshape)},
+         {"contacts", contacts},
+         {"force_closure", g.force_closure},
+         {"epsilon", g.epsilon},
+         {"alpha_rad", g.alpha_rad},
+         {"chi_m2", optional_json(g.chi_m2)},
+         {"region_rank", g.region_rank ? nlohmann::json(*g.region_rank) : nlohmann::json(nullptr)},
+         {"region", g.region ? region_to_json(*g.region) : nlohmann::json(nullptr)},
+         {"timings_s",
+          {{"exploration", g.times.exploration_s},
+           {"finger", g.times.finger_s},
+           {"quality", g.times.quality_s}}}});
+  }
+  return {{"format", kFormat},
+          {"format_version", kFormatVersion},
+          {"cordgrasp_version", plan.cordgrasp_version},
+          {"inputs",
+           {{"hand",
+             {{"name", plan.hand_name}, {"path", plan.hand_path}, {"urdf_path", plan.urdf_path}}},
+            {"object",
+             {{"path", plan.object_path},
+              {"name", plan.object_name},
+              {"units", plan.object_units},
+              {"triangles", plan.object_triangles}}}}},
+          {"parameters", plan.parameters},
+          {"stats", stats_json(plan.stats)},
+          {"grasps", grasps}};
+}
+
+void write_plan_file(const std::string& path, const PlanDocument& plan, const HandModel& hand) {
+  write_file_atomically(path, plan_to_json(plan, hand).dump(2) + "\n");
+}
+
+nlohmann::json read_plan_json(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError("read_plan: '" + path + "': cannot open file");
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError("read_plan: '" + path + "': not valid JSON (" + e.what() + ")");
+  }
+  if (!j.is_object() || j.value("format", std::string()) != kFormat)
+    throw InputError("read_plan: '" + path + "': not a cordgrasp plan (format != " + kFormat + ")");
+  if (j.value("format_version", 0) != kFormatVersion)
+    throw InputError("read_plan: '" + path + "': unsupported format_version " +
+                     j.value("format_version", nlohmann::json(nullptr)).dump());
+  return j;
+}
+
+std::string plan_hand_path(const nlohmann::json& plan) {
+  return plan.at("inputs").at("hand").at("path").get<std::string>();
+}
+
+std::string plan_object_path(const nlohmann::json& plan) {
+  return plan.at("inputs").at("object").at("path").get<std::string>();
+}
+
+PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand) {
+  PlanDocument p;
+  try {
+    p.cordgrasp_version = j.value("cordgrasp_version", std::string());
+    const auto& in_hand = j.at("inputs").at("hand");
+    const auto& in_obj = j.at("inputs").at("object");
+    p.hand_name = in_hand.at("name").get<std::string>();
+    p.hand_path = in_hand.value("path", std::string());
+    p.urdf_path = in_hand.value("urdf_path", std::string());
+    p.object_path = in_obj.at("path").get<std::string>();
+    p.object_name = in_obj.value("name", std::string());
+    p.object_units = in_obj.value("units", std::string("m"));
+    p.object_triangles = in_obj.value("triangles", 0);
+    p.parameters = j.value("parameters", nlohmann::json::object());
+    p.planner = p.parameters.value("planner", std::string("cord"));
+    p.stats = stats_from_json(j.value("stats", nlohmann::json::object()));
+    if (p.hand_name != hand.name)
+      throw InputError("plan: made for hand '" + p.hand_name + "', not '" + hand.name + "'");
+    for (const auto& g : j.at("grasps")) {
+      Grasp grasp;
+      grasp.X_OB = pose_from_json(g.at("hand_pose"));
+      grasp.X_OG = pose_from_json(g.at("gcp_pose"));
+      grasp.q = joints_from_json(hand, g.at("joints"), "joints");
+      grasp.q_preshape = joints_from_json(
+          hand, g.value("preshape_joints", nlohmann::json::object()), "preshape_joints");
+      for (const auto& c : g.at("contacts")) {
+        Contact contact;
+        const std::string link = c.at("link").get<std::string>();
+        contact.link = find_link(hand, link);
+        if (contact.link < 0)
+          throw InputError("plan: contact names link '" + link + "' that hand '" + hand.name +
+                           "' does not have");
+        contact.p_O = vec3_from_json(c.at("point_m"));
+        contact.n_O = vec3_from_json(c.at("normal"));
+        grasp.contacts.push_back(contact);
+      }
+      grasp.force_closure = g.value("force_closure", false);
+      grasp.epsilon = g.value("epsilon", 0.0);
+      grasp.alpha_rad = g.value("alpha_rad", 0.0);
+      if (g.contains("chi_m2") && !g["chi_m2"].is_null()) grasp.chi_m2 = g["chi_m2"].get<double>();
+      if (g.contains("region_rank") && !g["region_rank"].is_null())
+        grasp.region_rank = g["region_rank"].get<int>();
+      if (g.contains("region") && !g["region"].is_null()) {
+        try {
+          grasp.region = region_from_json(g["region"]);
+        } catch (const InputError& e) {
+          throw InputError("plan: grasp " + std::to_string(p.grasps.size()) + ": " + e.what());
+        }
+      }
+      const auto t = g.value("timings_s", nlohmann::json::object());
+      grasp.times.exploration_s = t.value("exploration", 0.0);
+      grasp.times.finger_s = t.value("finger", 0.0);
+      grasp.times.quality_s = t.value("quality", 0.0);
+      p.grasps.push_back(std::move(grasp));
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(std::string("plan: malformed plan.json (") + e.what() + ")");
+  }
+  return p;
+}
+
+}  // namespace cordgrasp

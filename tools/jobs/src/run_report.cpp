@@ -1,0 +1,122 @@
+#include "cordgrasp/jobs/run_report.h"
+#include "cordgrasp/jobs/text_format.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace cordgrasp {
+namespace {
+
+std::string num(double v, const char* fmt = "%.3g") { return format_number(v, fmt); }
+
+std::string outcome_text(const SimResult& r) {
+  std::string text = to_string(r.outcome);
+  for (const PhaseResult& p : r.phases)
+    if (p.outcome != Outcome::kHeld && p.outcome != Outcome::kNotRun) {
+      text += " in " + p.name + (p.detail.empty() ? "" : " (" + p.detail + ")");
+      break;
+    }
+  if (r.preshape_overlap) text += "; the preshape hand overlaps the collision shape";
+  return text;
+}
+
+}  // namespace
+
+std::string run_report_markdown(const RunReport& rep) {
+  const PlanDocument& plan = rep.plan;
+  const PlanStats& s = plan.stats;
+  std::ostringstream md;
+  md << "# cordgrasp run: " << plan.object_name << " · " << plan.hand_name << " · "
+     << plan.planner << " planner\n\n";
+  md << "cordgrasp " << plan.cordgrasp_version << ". Files: `plan.json` (grasps), "
+     << (rep.sim ? "`sim.json` (physics), " : "") << "PNG pictures, this report.\n\n";
+
+  md << "## Inputs\n\n";
+  md << "- Object: `" << plan.object_path << "` (" << plan.object_triangles << " triangles, units "
+     << plan.object_units << ")\n";
+  md << "- Hand: " << plan.hand_name << " (`" << plan.hand_path << "`)\n";
+  md << "- Planner: " << plan.planner << ", up to "
+     << plan.parameters.value("grasps", 0) << " grasps, time limit "
+     << num(plan.parameters.value("time_limit_s", 0.0)) << " s, seed "
+     << plan.parameters.value("seed", nlohmann::json(0)).dump() << ", μ "
+     << num(plan.parameters.value("mu", 0.0)) << ", soft-finger radius "
+     << num(plan.parameters.value("soft_finger_radius_m", 0.0)) << " m, quality "
+     << plan.parameters.value("quality", std::string("textbook")) << "\n";
+  if (rep.sim)
+    md << "- Physics (Bullet): tests " << to_string(rep.sim->tests) << ", time step "
+       << num(rep.sim->params.time_step_s, "%.5f") << " s, object mass "
+       << (rep.sim->results.empty() ? std::string("–")
+                                    : num(rep.sim->results.front().object.mass_kg) + " kg")
+       << "\n";
+  else
+    md << "- Physics: skipped (`--tests none`)\n";
+  md << "\n## Result\n\n";
+  const int n = static_cast<int>(plan.grasps.size());
+  if (n == 0) {
+    md << "**No force-closure grasp found** in " << num(s.total_s) << " s (" << s.attempts
+       << " attempts: " << s.not_force_closure << " not force closure, " << s.one_contact
+       << " with one contact, " << s.no_contact << " without contact, " << s.cannot_retreat
+       << " could not retreat" << (s.timed_out ? "; time limit reached" : "") << ").\n";
+    return md.str();
+  }
+  md << n << " force-closure grasp" << (n > 1 ? "s" : "") << " in " << num(s.total_s)
+     << " s; the first after " << (s.first_force_closure_s ? num(*s.first_force_closure_s) : "–")
+     << " s (" << s.attempts << " finger-stage attempts";
+  if (plan.planner == "cord") md << ", " << s.regions_processed << " of " << s.regions << " regions";
+  md << ").";
+  if (rep.sim) {
+    int held = 0;
+    for (const SimResult& r : rep.sim->results) held += r.held();
+    md << " Physics: **" << held << " of " << rep.sim->results.size() << " held** through "
+       << to_string(rep.sim->tests) << ".";
+  }
+  md << "\n\n| # | α [rad] | ε | χ [mm²] | region | contacts | physics | max penetration [mm] |\n"
+     << "|---|---|---|---|---|---|---|---|\n";
+  for (int k = 0; k < n; ++k) {
+    const Grasp& g = plan.grasps[static_cast<size_t>(k)];
+    md << "| " << k << " | " << num(g.alpha_rad, "%.3f") << " | " << num(g.epsilon, "%.4f")
+       << " | " << (g.chi_m2 ? num(*g.chi_m2 * 1e6, "%.1f") : "–") << " | "
+       << (g.region_rank ? std::to_string(*g.region_rank) : "–") << " | " << g.contacts.size()
+       << " | ";
+    const SimResult* r = nullptr;
+    if (rep.sim)
+      for (size_t i = 0; i < rep.sim->grasp_indices.size(); ++i)
+        if (rep.sim->grasp_indices[i] == k) r = &rep.sim->results[i];
+    if (r) {
+      double pen = 0.0;
+      for (const PhaseResult& p : r->phases) pen = std::max(pen, p.max_penetration_m);
+      md << outcome_text(*r) << " | " << num(pen * 1e3, "%.2f") << " |\n";
+    } else {
+      md << "– | – |\n";
+    }
+  }
+  md << "\nα: skewness (0 = the hand's axis on the object's principal axis; spec §9). "
+        "ε: wrench-space quality (spec §8). χ: XOR measure of the grasp region (spec §6).\n";
+
+  md << "\n## Timings\n\n| stage | wall [s] |\n|---|---|\n";
+  if (plan.planner == "cord") md << "| cord exploration | " << num(s.exploration_s) << " |\n";
+  md << "| finger stage | " << num(s.finger_s) << " |\n"
+     << "| grasp quality | " << num(s.quality_s) << " |\n"
+     << "| planning (total) | " << num(rep.plan_wall_s) << " |\n";
+  if (rep.sim) md << "| physics | " << num(rep.sim_wall_s) << " |\n";
+  if (!rep.pictures.empty()) md << "| rendering | " << num(rep.render_wall_s) << " |\n";
+
+  if (!rep.pictures.empty() || !rep.sheet.empty()) {
+    md << "\n## Pictures\n\n";
+    if (!rep.sheet.empty()) md << "All grasps: ![grasps](" << rep.sheet << ")\n\n";
+    for (size_t k = 0; k < rep.pictures.size(); ++k) {
+      const GraspPictures& p = rep.pictures[k];
+      md << "### Grasp " << k << "\n\n";
+      if (!p.planned.empty()) md << "Planned: ![grasp " << k << "](" << p.planned << ")\n\n";
+      if (!p.snapshots.empty()) {
+        md << "Physics:";
+        for (const std::string& f : p.snapshots) md << " ![" << f << "](" << f << ")";
+        md << "\n\n";
+      }
+    }
+  }
+  return md.str();
+}
+
+}  // namespace cordgrasp

@@ -1,0 +1,122 @@
+#include "cordgrasp/jobs/validate_plan.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+#include "cordgrasp/jobs/text_format.h"
+
+namespace cordgrasp {
+
+SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const Mesh& mesh,
+                          const SimParams& params, const SimTests& tests, int max_grasps,
+                          const ValidateProgress& progress, const GraspPhaseHooks& hooks) {
+  const auto start = std::chrono::steady_clock::now();
+  SimDocument doc;
+  doc.hand_name = plan.hand_name;
+  doc.hand_path = plan.hand_path;
+  doc.object_path = plan.object_path;
+  doc.object_name = plan.object_name;
+  doc.object_units = plan.object_units;
+  doc.object_triangles = static_cast<int>(mesh.triangles.size());
+  if (plan.parameters.contains("seed") && plan.parameters["seed"].is_number_unsigned())
+    doc.plan_seed = plan.parameters["seed"].get<std::uint64_t>();
+  doc.params = params;
+  doc.tests = tests;
+  const int total = max_grasps < 0 ? static_cast<int>(plan.grasps.size())
+                                   : std::min(max_grasps, static_cast<int>(plan.grasps.size()));
+  for (int k = 0; k < total; ++k) {
+    const Grasp& g = plan.grasps[static_cast<size_t>(k)];
+    doc.results.push_back(
+        validate_grasp(mesh, hand, g, params, tests, hooks ? hooks(k) : PhaseHook{}));
+    doc.grasps.push_back(g);
+    doc.grasp_indices.push_back(k);
+    if (progress) progress(k + 1, total, doc.results.back());
+  }
+  doc.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return doc;
+}
+
+void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const HandModel& hand,
+                          const Mesh& mesh, int trials, const PerturbationParams& perturbation,
+                          std::uint64_t seed, const ValidateProgress& progress) {
+  if (trials < 1 || trials > 1000)
+    throw std::invalid_argument("add_perturbed_trials: trials must be in [1, 1000], got " +
+                                std::to_string(trials));
+  const auto start = std::chrono::steady_clock::now();
+  doc.trial_perturbation = perturbation;
+  doc.trial_seed = seed;
+  doc.trial_outcomes.assign(doc.results.size(), {});
+  const size_t total = doc.results.size();
+  for (size_t k = 0; k < total; ++k) {
+    std::vector<Outcome>& outcomes = doc.trial_outcomes[k];
+    outcomes.push_back(doc.results[k].outcome);
+    const Grasp& planned = plan.grasps[static_cast<size_t>(doc.grasp_indices[k])];
+    for (int t = 1; t < trials; ++t) {
+      const Grasp g = perturbed_grasp(planned, perturbation, seed + 1000 * k + t);
+      outcomes.push_back(validate_grasp(mesh, hand, g, doc.params, doc.tests).outcome);
+    }
+    if (progress)
+      progress(static_cast<int>(k + 1), static_cast<int>(total), doc.results[k]);
+  }
+  doc.wall_time_s +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int count_held(const std::vector<Outcome>& outcomes) {
+  return static_cast<int>(std::count(outcomes.begin(), outcomes.end(), Outcome::kHeld));
+}
+
+std::string trials_line(const std::vector<Outcome>& outcomes) {
+  return "held in " + std::to_string(count_held(outcomes)) + " / " +
+         std::to_string(outcomes.size()) + " trials";
+}
+
+FailureCounts count_failures(const std::vector<SimResult>& results) {
+  FailureCounts counts;
+  for (const char* name : {"settle", "close", "lift", "shake", "gravity6"})
+    counts.by_phase.emplace_back(name, 0);
+  for (const SimResult& r : results) {
+    counts.preshape_overlaps += r.preshape_overlap;
+    if (const PhaseResult* failed = r.held() ? nullptr : r.failed_phase())
+      for (auto& [name, count] : counts.by_phase)
+        if (name == failed->name) ++count;
+  }
+  return counts;
+}
+
+std::string failures_line(const std::vector<SimResult>& results) {
+  const FailureCounts counts = count_failures(results);
+  std::string line = "not held by phase:";
+  for (size_t i = 0; i < counts.by_phase.size(); ++i)
+    line += (i ? ", " : " ") + counts.by_phase[i].first + " " +
+            std::to_string(counts.by_phase[i].second);
+  return line + "; preshape overlaps " + std::to_string(counts.preshape_overlaps);
+}
+
+std::string sim_result_line(const SimResult& r) {
+  std::ostringstream s;
+  s << to_string(r.outcome) << " (";
+  bool first = true;
+  for (const PhaseResult& p : r.phases) {
+    if (p.name == "settle" || p.name == "close") {
+      if (p.outcome == Outcome::kHeld) continue;
+    }
+    if (!first) s << ", ";
+    first = false;
+    s << p.name << ' ' << to_string(p.outcome);
+    if (!p.detail.empty() && p.outcome != Outcome::kHeld) s << " at " << p.detail;
+  }
+  char tail[96];
+  std::snprintf(tail, sizeof(tail), ") mass %.3f kg, %.2f s", r.object.mass_kg, r.wall_time_s);
+  s << tail;
+  if (const PhaseResult* settle = r.preshape_overlap ? r.phase("settle") : nullptr)
+    s << "; the preshape hand overlaps the object's collision shape (settle moved it "
+      << fixed(1e3 * settle->translation_m, 1) << " mm)";
+  return s.str();
+}
+
+}  // namespace cordgrasp
