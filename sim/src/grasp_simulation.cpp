@@ -124,7 +124,9 @@ struct GraspSimulation::Impl {
   std::vector<double> actor_speed;   ///< |direction_speed|
 
   Eigen::Isometry3d X_BO_ref = Eigen::Isometry3d::Identity();  ///< object in hand root frame
+  Eigen::VectorXd q_start;  ///< joints at the reach start (SimParams::reach_start_fraction)
   bool closed = false;
+  int last_contact_count = 0;  ///< hand–object contacts after the last step of a phase
   PhaseHook segment_hook;
   int trace_every = 0;  ///< steps between trace samples (SimParams::trace_interval_s); 0: off
 
@@ -161,9 +163,19 @@ struct GraspSimulation::Impl {
   std::chrono::steady_clock::time_point phase_start;
   Outcome classify(const PhaseResult& r) const;
   /// Runs `duration` seconds along a root trajectory X_WB(t) (t from 0); returns false when the
-  /// phase must stop (blown up or the object is drop_distance_m off).
+  /// phase must stop (blown up, the object drop_distance_m off, or failed:
+  /// SimParams::exit_on_failure). With `rest_exit`, returns true early once the object has been
+  /// at rest in the hand for SimParams::rest_exit_time_s.
   template <class Trajectory>
-  bool run(double duration, const Trajectory& trajectory);
+  bool run(double duration, const Trajectory& trajectory, bool rest_exit = false);
+  /// The object moves and turns slower than the rest_* speeds relative to the hand base.
+  bool object_at_rest() const;
+  /// Largest fraction f ≤ SimParams::reach_start_fraction (f, 3f/4, f/2, f/4, 0) at which the
+  /// joints q_preshape + f·(q − q_preshape) keep reach_start_clearance_m from the object.
+  double reach_start_fraction_clear();
+  /// Smallest hand–object distance reported by Bullet's narrow phase for the current poses
+  /// (+inf when no pair is within its contact threshold) [m].
+  double hand_object_distance();
   double pose_change(const Eigen::Isometry3d& X_BO_reference, double* rotation) const;
 };
 
@@ -253,6 +265,15 @@ GraspSimulation::Impl::Impl(const Mesh& mesh, const HandModel& h, const Grasp& g
   X_WB_cmd = X_WO0 * X_OB;
   bullet::place_hand(*hand_body, X_WB_cmd, grasp.q_preshape);
   bullet::add_hand_to_world(*hand_body, *world, kHandGroup, kObjectGroup);
+  q_start = grasp.q_preshape;
+  if (params.reach_start_fraction > 0.0) {
+    const double f = reach_start_fraction_clear();
+    q_start = grasp.q_preshape + f * (grasp.q - grasp.q_preshape);
+    bullet::place_hand(*hand_body, X_WB_cmd, q_start);
+    // The probes leave contact points in the manifolds: start the simulation without them.
+    for (int m = 0; m < dispatcher->getNumManifolds(); ++m)
+      dispatcher->getManifoldByIndexInternal(m)->clearManifold();
+  }
 
   // Actor joints (the closing ones) and their closing directions.
   for (const Actor& actor : hand.actors)
@@ -262,13 +283,51 @@ GraspSimulation::Impl::Impl(const Mesh& mesh, const HandModel& h, const Grasp& g
       actor_sign.push_back(e.direction_speed > 0.0 ? 1.0 : -1.0);
       actor_speed.push_back(std::abs(e.direction_speed));
     }
-  q_target = grasp.q_preshape;
+  q_target = q_start;
   qd_feedforward = Eigen::VectorXd::Zero(n);
   spring_gain = Eigen::VectorXd::Zero(n);
   speed_cap = Eigen::VectorXd::Constant(n, params.hold_speed);
   for (Eigen::Index j = 0; j < n; ++j)
     if (hand.joints[static_cast<size_t>(j)].type == JointType::kPrismatic)
       speed_cap[j] = 0.1 * params.hold_speed;
+}
+
+double GraspSimulation::Impl::hand_object_distance() {
+  world->performDiscreteCollisionDetection();
+  double nearest = std::numeric_limits<double>::infinity();
+  const btCollisionObject* obj = object->body.get();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    const btPersistentManifold* pm = dispatcher->getManifoldByIndexInternal(m);
+    if (pm->getBody0() != obj && pm->getBody1() != obj) continue;
+    for (int c = 0; c < pm->getNumContacts(); ++c)
+      nearest = std::min(nearest, static_cast<double>(pm->getContactPoint(c).getDistance()));
+  }
+  return nearest;
+}
+
+double GraspSimulation::Impl::reach_start_fraction_clear() {
+  const double f = std::min(1.0, params.reach_start_fraction);
+  for (int quarters = 4; quarters >= 1; --quarters) {
+    const double fraction = f * quarters / 4.0;
+    bullet::place_hand(*hand_body, X_WB_cmd,
+                       grasp.q_preshape + fraction * (grasp.q - grasp.q_preshape));
+    // Fresh manifolds: points kept from an earlier probe would measure the wrong pose.
+    for (int m = 0; m < dispatcher->getNumManifolds(); ++m)
+      dispatcher->getManifoldByIndexInternal(m)->clearManifold();
+    if (hand_object_distance() >= params.reach_start_clearance_m) return fraction;
+  }
+  return 0.0;
+}
+
+bool GraspSimulation::Impl::object_at_rest() const {
+  const btRigidBody& o = *object->body;
+  const btMultiBody& mb = *hand_body->mb;
+  const Eigen::Vector3d w_base = from_bt(mb.getBaseOmega());
+  const Eigen::Vector3d r = from_bt(o.getCenterOfMassPosition()) - from_bt(mb.getBasePos());
+  const Eigen::Vector3d v_rel =
+      from_bt(o.getLinearVelocity()) - (from_bt(mb.getBaseVel()) + w_base.cross(r));
+  const Eigen::Vector3d w_rel = from_bt(o.getAngularVelocity()) - w_base;
+  return v_rel.norm() < params.rest_speed_mps && w_rel.norm() < params.rest_angular_speed_radps;
 }
 
 GraspSimulation::Impl::~Impl() {
@@ -324,6 +383,7 @@ void GraspSimulation::Impl::step(const Eigen::Isometry3d& X_WB_next) {
     double penetration = 0.0;
     contacts(count, penetration);
     current->max_contact_count = std::max(current->max_contact_count, count);
+    last_contact_count = count;
     current->max_penetration_m = std::max(current->max_penetration_m, penetration);
   }
   if (unstable()) blew_up = true;
@@ -451,15 +511,35 @@ void GraspSimulation::Impl::finish(PhaseResult& r, const Eigen::Isometry3d& X_BO
 }
 
 template <class Trajectory>
-bool GraspSimulation::Impl::run(double duration, const Trajectory& trajectory) {
+bool GraspSimulation::Impl::run(double duration, const Trajectory& trajectory, bool rest_exit) {
   const int steps = static_cast<int>(std::lround(duration / dt));
+  const bool exit_on_failure = params.exit_on_failure && closed && current;
+  const int rest_steps =
+      rest_exit && params.rest_exit_time_s > 0.0
+          ? std::max(1, static_cast<int>(std::lround(params.rest_exit_time_s / dt)))
+          : 0;
+  const int no_contact_steps =
+      std::max(1, static_cast<int>(std::lround(params.no_contact_exit_time_s / dt)));
+  int at_rest = 0;
+  int without_contact = 0;
   for (int s = 1; s <= steps; ++s) {
     step(trajectory(s * dt));
     if (blew_up) return false;
     if (closed && current) {
-      const double moved = pose_change(X_BO_ref, nullptr);
+      double turned = 0.0;
+      const double moved = pose_change(X_BO_ref, exit_on_failure ? &turned : nullptr);
       current->max_translation_m = std::max(current->max_translation_m, moved);
       if (moved > params.drop_distance_m) return false;
+      if (exit_on_failure) {
+        if (moved >= params.held_translation_m || turned >= params.held_rotation_rad)
+          return false;
+        without_contact = last_contact_count > 0 ? 0 : without_contact + 1;
+        if (without_contact >= no_contact_steps) return false;
+      }
+    }
+    if (rest_steps > 0) {
+      at_rest = object_at_rest() ? at_rest + 1 : 0;
+      if (at_rest >= rest_steps) return true;
     }
   }
   return true;
@@ -475,7 +555,7 @@ PhaseResult GraspSimulation::settle() {
   Impl& s = *impl_;
   PhaseResult r;
   s.begin(r, "settle", Eigen::Vector3d::Zero());
-  s.q_target = s.grasp.q_preshape;
+  s.q_target = s.q_start;
   const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
   const Eigen::Isometry3d X_BO_plan = s.grasp.X_OB.inverse();
   s.run(s.params.settle_time_s, [&](double) { return X_WB0; });
@@ -592,11 +672,20 @@ PhaseResult GraspSimulation::lift() {
   const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
   const double h = s.params.lift_height_m;
   const double T = s.params.lift_time_s;
-  s.run(T + s.params.lift_hold_s, [&](double t) {
+  const auto rise = [&](double t) {
     Eigen::Isometry3d X = X_WB0;
     X.translation().z() += h * min_jerk(t / T);
     return X;
-  });
+  };
+  if (s.params.rest_exit_time_s > 0.0) {
+    // Rise, then hold until the object rests in the hand (or lift_hold_s).
+    if (s.run(T, rise)) {
+      const Eigen::Isometry3d X_WB_top = rise(T);
+      s.run(s.params.lift_hold_s, [&](double) { return X_WB_top; }, true);
+    }
+  } else {
+    s.run(T + s.params.lift_hold_s, rise);
+  }
   s.finish(r, s.X_BO_ref);
   return r;
 }
@@ -616,8 +705,8 @@ PhaseResult GraspSimulation::shake() {
     const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
     const Eigen::Vector3d axis = Eigen::Vector3d::Unit(a);
     const double A = s.params.shake_amplitude_m;
-    const double f = s.params.shake_frequency_hz;
     const double T = s.params.shake_time_s;
+    const double f = std::max(s.params.shake_frequency_hz, 1.0 / T);  // both ways
     const bool ran = s.run(T, [&](double t) {
       Eigen::Isometry3d X = X_WB0;
       X.translation() += A * faded_sine(t, f, T) * axis;
@@ -632,8 +721,8 @@ PhaseResult GraspSimulation::shake() {
         gcp_pose(s.hand, link_poses(s.hand, s.grasp.q, X_WB0)).translation();
     const Eigen::Vector3d axis = Eigen::Vector3d::Unit(a);
     const double Theta = s.params.rock_angle_rad;
-    const double f = s.params.rock_frequency_hz;
     const double T = s.params.rock_time_s;
+    const double f = std::max(s.params.rock_frequency_hz, 1.0 / T);  // tilts both ways
     const bool ran = s.run(T, [&](double t) {
       const Eigen::Matrix3d R =
           Eigen::AngleAxisd(Theta * faded_sine(t, f, T), axis).toRotationMatrix();
@@ -658,7 +747,7 @@ PhaseResult GraspSimulation::gravity6() {
     Eigen::Vector3d g = Eigen::Vector3d::Zero();
     g[d / 2] = (d % 2 == 0 ? 1.0 : -1.0) * s.params.gravity_mps2;
     s.set_gravity(g);
-    const bool ran = s.run(s.params.gravity6_time_s, [&](double) { return X_WB0; });
+    const bool ran = s.run(s.params.gravity6_time_s, [&](double) { return X_WB0; }, true);
     if (s.segment_hook) s.segment_hook(s.snapshot(std::string("gravity6 ") + kNames[d]));
     if (!s.segment_holds(r, std::string("gravity ") + kNames[d], ran)) break;
   }

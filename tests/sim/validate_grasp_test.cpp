@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
@@ -30,9 +31,10 @@ constexpr double kInertiaRelTol = 1e-9;
 /// (docs/physics.md).
 constexpr double kPadPatchRadius_m = 0.005;
 
-/// Default simulation parameters with the pads' soft-finger contacts.
-SimParams gripper_params() {
-  SimParams params;
+/// Simulation parameters of `protocol` (default: the default one) with the pads' soft-finger
+/// contacts.
+SimParams gripper_params(std::optional<Protocol> protocol = std::nullopt) {
+  SimParams params = protocol ? sim_params_for(*protocol) : SimParams{};
   params.contact.soft_finger_radius_m = kPadPatchRadius_m;
   return params;
 }
@@ -71,6 +73,87 @@ TEST(ValidateGrasp, ParallelGripperPinchingABoxAtItsCentreHoldsThroughEveryTest)
   const int j = find_joint(gripper(), "left_finger_joint");
   EXPECT_LT(lift.joint_efforts[static_cast<size_t>(j)], -1.0);
   EXPECT_NEAR(r.object.mass_kg, SimParams{}.density_kgm3 * std::pow(kBoxSide_m, 3), 1e-12);
+}
+
+TEST(ValidateGrasp, ThoroughProtocolHoldsTheCentrePinchThroughItsFullPhases) {
+  const SimParams params = gripper_params(Protocol::kThorough);
+  const SimResult r = validate_grasp(box(), gripper(), centre_pinch(), params);
+  EXPECT_EQ(r.outcome, Outcome::kHeld);
+  // No early exit: every phase runs its whole time.
+  const auto steps = [&](double t_s) {
+    return static_cast<int>(std::lround(t_s / params.time_step_s));
+  };
+  ASSERT_NE(r.phase("lift"), nullptr);
+  EXPECT_EQ(r.phase("lift")->steps, steps(params.lift_time_s + params.lift_hold_s));
+  ASSERT_NE(r.phase("shake"), nullptr);
+  EXPECT_EQ(r.phase("shake")->steps,
+            3 * steps(params.shake_time_s) + 3 * steps(params.rock_time_s));
+  ASSERT_NE(r.phase("gravity6"), nullptr);
+  EXPECT_EQ(r.phase("gravity6")->steps, 6 * steps(params.gravity6_time_s));
+}
+
+TEST(ValidateGrasp, QuickProtocolEndsTheHoldsOnceTheHeldBoxRests) {
+  const SimParams params = gripper_params(Protocol::kQuick);
+  const SimResult r = validate_grasp(box(), gripper(), centre_pinch(), params);
+  EXPECT_EQ(r.outcome, Outcome::kHeld);
+  const auto steps = [&](double t_s) {
+    return static_cast<int>(std::lround(t_s / params.time_step_s));
+  };
+  ASSERT_NE(r.phase("lift"), nullptr);
+  EXPECT_GE(r.phase("lift")->steps, steps(params.lift_time_s + params.rest_exit_time_s));
+  EXPECT_LT(r.phase("lift")->steps, steps(params.lift_time_s + params.lift_hold_s));
+  ASSERT_NE(r.phase("gravity6"), nullptr);
+  EXPECT_LT(r.phase("gravity6")->steps, 6 * steps(params.gravity6_time_s));
+}
+
+TEST(ValidateGrasp, FailureExitEndsAFailedLiftEarlyWithTheSameOutcome) {
+  SimParams params = gripper_params(Protocol::kQuick);
+  params.mass_kg = kHeavyBox_kg;
+  params.effort_scale = kWeakMotors;
+  const SimTests lift_only{true, false, false};
+  const SimResult early = validate_grasp(box(), gripper(), centre_pinch(), params, lift_only);
+  params.exit_on_failure = false;
+  const SimResult full = validate_grasp(box(), gripper(), centre_pinch(), params, lift_only);
+  EXPECT_EQ(early.outcome, Outcome::kSlipped);
+  EXPECT_NE(full.outcome, Outcome::kHeld);
+  EXPECT_NE(full.outcome, Outcome::kUnstable);
+  const PhaseResult* a = early.phase("lift");
+  const PhaseResult* b = full.phase("lift");
+  ASSERT_NE(a, nullptr);
+  ASSERT_NE(b, nullptr);
+  EXPECT_LT(a->steps, b->steps);
+  EXPECT_GE(a->translation_m, params.held_translation_m);
+}
+
+/// Joint value of the gripper's driving finger joint at the end of settle under `params`.
+double settled_opening(const Grasp& grasp, const SimParams& params) {
+  double opening = NAN;
+  const int j = find_joint(gripper(), "left_finger_joint");
+  validate_grasp(box(), gripper(), grasp, params, SimTests{false, false, false},
+                 [&](const PhaseSnapshot& s) {
+                   if (s.phase == "settle") opening = s.q[j];
+                 });
+  return opening;
+}
+
+TEST(ValidateGrasp, ReachStartsPartOfTheWayToThePlanUnlessTheFingersWouldEnterTheObject) {
+  /// Servo tracking error of the held joint at the end of settle [m].
+  constexpr double kHeldJointTol_m = 1e-4;
+  const SimParams quick = gripper_params(Protocol::kQuick);
+  ASSERT_GT(quick.reach_start_fraction, 0.0);
+  // Pads from 5 cm to the faces at 2.5 cm: 80 % of the way leaves them 5 mm off the faces.
+  const double f = quick.reach_start_fraction;
+  EXPECT_NEAR(settled_opening(centre_pinch(), quick),
+              kOpenGripper_m + f * (0.5 * kBoxSide_m - kOpenGripper_m), kHeldJointTol_m);
+  EXPECT_NEAR(settled_opening(centre_pinch(), gripper_params(Protocol::kThorough)),
+              kOpenGripper_m, kHeldJointTol_m);
+  // A plan 2 cm inside the faces (pads 5 mm from the centre): 80 % and 60 % of the way put the
+  // pads inside the box, half of 80 % leaves them 7 mm off the faces.
+  constexpr double kDeepPlan_m = 0.005;
+  const Grasp deep = test::top_down_pinch(gripper(), Eigen::Vector3d::Zero(), kDeepPlan_m,
+                                          kOpenGripper_m);
+  EXPECT_NEAR(settled_opening(deep, quick),
+              kOpenGripper_m + 0.5 * f * (kDeepPlan_m - kOpenGripper_m), kHeldJointTol_m);
 }
 
 /// The centre pinch with its planned contacts: each pad on the box face it faces.
@@ -128,10 +211,17 @@ TEST(ValidateGrasp, FlagsAPreshapeHandPlacedIntoTheObject) {
 }
 
 TEST(ValidateGrasp, PinchWithoutFrictionDrops) {
-  SimParams params = gripper_params();
+  SimParams params = gripper_params(Protocol::kThorough);
   params.contact.mu = 0.0;
   const SimResult r = validate_grasp(box(), gripper(), centre_pinch(), params);
   EXPECT_EQ(r.outcome, Outcome::kDropped);
+  // The quick protocol stops the lift once the box is 2 cm down, still between the pads.
+  SimParams quick = gripper_params(Protocol::kQuick);
+  quick.contact.mu = 0.0;
+  const SimResult q = validate_grasp(box(), gripper(), centre_pinch(), quick);
+  EXPECT_EQ(q.outcome, Outcome::kSlipped);
+  ASSERT_NE(q.phase("lift"), nullptr);
+  EXPECT_LT(q.phase("lift")->steps, r.phase("lift")->steps);
 }
 
 TEST(ValidateGrasp, FingersOneCentimetreShortOfTheFacesDrop) {
@@ -206,8 +296,10 @@ TEST(ValidateGrasp, TraceSamplesFollowTheObjectAndEachPhaseEndsAtItsOutcome) {
     }
     if (seen[i].phase == "lift" && !seen[i].phase_end) ++lift_samples;
   }
-  EXPECT_EQ(lift_samples, static_cast<int>(std::lround(
-                              (params.lift_time_s + params.lift_hold_s) / kTraceInterval_s)));
+  const PhaseResult* lift = r.phase("lift");
+  ASSERT_NE(lift, nullptr);
+  EXPECT_EQ(lift_samples,
+            lift->steps / static_cast<int>(std::lround(kTraceInterval_s / params.time_step_s)));
   // The lift raises the box 10 cm; in the hand it stays put, touching both pads throughout.
   for (const PhaseSnapshot& s : seen) {
     if (s.phase != "lift") continue;
@@ -283,6 +375,56 @@ TEST(ObjectShapeFromString, RoundTripsEveryShape) {
                         ObjectShape::kGImpact})
     EXPECT_EQ(object_shape_from_string(to_string(s)), s);
   EXPECT_THROW(object_shape_from_string("vhacd"), std::invalid_argument);
+}
+
+TEST(ProtocolFromString, RoundTripsEveryProtocol) {
+  for (Protocol p : {Protocol::kQuick, Protocol::kThorough})
+    EXPECT_EQ(protocol_from_string(to_string(p)), p);
+  EXPECT_THROW(protocol_from_string("fast"), std::invalid_argument);
+}
+
+TEST(ApplyProtocol, QuickIsTheDefaultAndThoroughTheLongProtocol) {
+  const SimParams quick = sim_params_for(Protocol::kQuick);
+  const SimParams defaults;
+  EXPECT_EQ(defaults.protocol, Protocol::kQuick);
+  EXPECT_EQ(quick.lift_time_s, defaults.lift_time_s);
+  EXPECT_EQ(quick.lift_hold_s, defaults.lift_hold_s);
+  EXPECT_EQ(quick.shake_time_s, defaults.shake_time_s);
+  EXPECT_EQ(quick.rock_time_s, defaults.rock_time_s);
+  EXPECT_EQ(quick.rock_frequency_hz, defaults.rock_frequency_hz);
+  EXPECT_EQ(quick.gravity6_time_s, defaults.gravity6_time_s);
+  EXPECT_EQ(quick.reach_start_fraction, defaults.reach_start_fraction);
+  EXPECT_EQ(quick.rest_exit_time_s, defaults.rest_exit_time_s);
+  EXPECT_EQ(quick.exit_on_failure, defaults.exit_on_failure);
+  // Thorough: the protocol's numbers before the quick preset, and no early exit.
+  const SimParams t = sim_params_for(Protocol::kThorough);
+  EXPECT_EQ(t.protocol, Protocol::kThorough);
+  EXPECT_EQ(t.settle_time_s, 0.05);
+  EXPECT_EQ(t.squeeze_max_time_s, 0.5);
+  EXPECT_EQ(t.lift_height_m, 0.10);
+  EXPECT_EQ(t.lift_time_s, 1.0);
+  EXPECT_EQ(t.lift_hold_s, 1.0);
+  EXPECT_EQ(t.shake_amplitude_m, 0.02);
+  EXPECT_EQ(t.shake_frequency_hz, 2.0);
+  EXPECT_EQ(t.shake_time_s, 1.0);
+  EXPECT_EQ(t.rock_angle_rad, 15.0 * M_PI / 180.0);
+  EXPECT_EQ(t.rock_frequency_hz, 1.0);
+  EXPECT_EQ(t.rock_time_s, 1.0);
+  EXPECT_EQ(t.gravity6_time_s, 1.0);
+  EXPECT_EQ(t.reach_start_fraction, 0.0);
+  EXPECT_EQ(t.rest_exit_time_s, 0.0);
+  EXPECT_FALSE(t.exit_on_failure);
+  EXPECT_EQ(t.time_step_s, 1.0 / 960.0);
+  EXPECT_EQ(t.solver_iterations, 50);
+  EXPECT_EQ(t.contact_stiffness_Npm, 0.0);
+  // Applying a preset leaves the fields it does not own.
+  SimParams custom;
+  custom.contact.mu = 0.3;
+  custom.lift_height_m = 0.2;
+  apply_protocol(Protocol::kThorough, &custom);
+  EXPECT_EQ(custom.contact.mu, 0.3);
+  EXPECT_EQ(custom.lift_height_m, 0.2);
+  EXPECT_EQ(custom.lift_time_s, 1.0);
 }
 
 TEST(SqueezeDirectionFromString, RoundTripsEveryDirection) {

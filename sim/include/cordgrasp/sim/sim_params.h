@@ -46,6 +46,22 @@ enum class WorldFrame {
   kObject,
 };
 
+/// Preset of the protocol's phase durations and early exits (apply_protocol).
+enum class Protocol {
+  /// Short phases (lift 0.5 s + hold ≤ 0.3 s, 0.5 s per shake and rock axis), early exits and
+  /// a reach from near the plan: the default (docs/notes/2026-12-01-quick-protocol.md).
+  kQuick,
+  /// The long protocol (lift 1 s + hold 1 s, 1 s per shake and rock axis), no early exits,
+  /// the reach from the preshape: the protocol before the quick one, verdict for verdict.
+  kThorough,
+};
+
+/// "quick", "thorough".
+const char* to_string(Protocol protocol);
+
+/// Parses the names of to_string(Protocol). @throws std::invalid_argument otherwise.
+Protocol protocol_from_string(const std::string& text);
+
 /// Parameters of the physics validation (issue 5). Defaults were chosen by measurement; each
 /// field says why (docs/physics.md has the numbers and the commands).
 struct SimParams {
@@ -161,6 +177,9 @@ struct SimParams {
   double base_mass_scale = 1000.0;
 
   // --- Protocol (issue 5) ------------------------------------------------------------------
+  // Defaults: Protocol::kQuick; apply_protocol() sets every field marked "(preset)".
+  /// The preset the "(preset)" fields were set from (recorded in sim.json).
+  Protocol protocol = Protocol::kQuick;
   WorldFrame world_frame = WorldFrame::kApproachDown;
   double gravity_mps2 = 9.81;         ///< magnitude, along −z_W in lift/shake
   double settle_time_s = 0.05;        ///< settle: gravity off, preshape held
@@ -171,15 +190,39 @@ struct SimParams {
   double stall_speed = 0.02;
   double stall_time_s = 0.05;         ///< ...for this long have stalled
   double lift_height_m = 0.10;        ///< lift: rise along +z_W...
-  double lift_time_s = 1.0;           ///< ...in this time (minimum-jerk profile)...
-  double lift_hold_s = 1.0;           ///< ...then hold
+  double lift_time_s = 0.5;           ///< ...in this time (minimum-jerk profile)... (preset)
+  double lift_hold_s = 0.3;           ///< ...then hold at most this long (preset)
   double shake_amplitude_m = 0.02;    ///< shake: ±amplitude along x_W, y_W, z_W in turn
-  double shake_frequency_hz = 2.0;
-  double shake_time_s = 1.0;          ///< per axis
+  double shake_frequency_hz = 2.0;    ///< (at least 1 / shake_time_s is used: both ways)
+  double shake_time_s = 0.5;          ///< per axis (preset)
   double rock_angle_rad = 15.0 * M_PI / 180.0;  ///< then ±angle about x_W, y_W, z_W (GCP)
-  double rock_frequency_hz = 1.0;
-  double rock_time_s = 1.0;           ///< per axis
-  double gravity6_time_s = 1.0;       ///< gravity6: per direction ±x, ±y, ±z, hand fixed
+  double rock_frequency_hz = 2.0;     ///< (preset; at least 1 / rock_time_s is used: tilts
+                                      ///< both ways)
+  double rock_time_s = 0.5;           ///< per axis (preset)
+  double gravity6_time_s = 0.5;       ///< gravity6: at most this per direction ±x, ±y, ±z,
+                                      ///< hand fixed (preset)
+  /// Reach start: before settle the fingers are put this fraction of the way from the preshape
+  /// to the plan (0: the preshape), backing off in quarters to 0 while they would come closer
+  /// than reach_start_clearance_m to the object's collision shape [-] (preset).
+  double reach_start_fraction = 0.8;
+  /// Clearance the fingers keep from the object at the reach start [m].
+  double reach_start_clearance_m = 1e-3;
+
+  // --- Early exits --------------------------------------------------------------------------
+  /// Rest exit: the lift's hold and each gravity6 direction end once the object has been at
+  /// rest relative to the hand this long (0: off) [s] (preset).
+  double rest_exit_time_s = 0.1;
+  /// At rest: the object's centre of mass moves slower than this relative to the hand [m/s]...
+  double rest_speed_mps = 2e-3;
+  /// ...and it turns slower than this relative to the hand [rad/s].
+  double rest_angular_speed_radps = 0.02;
+  /// Failure exit: lift, shake and gravity6 end at once when the object has moved or turned
+  /// past held_translation_m / held_rotation_rad, or has not touched the hand for
+  /// no_contact_exit_time_s (false: only at drop_distance_m) (preset). An object falling out
+  /// between the fingers is then `slipped`, where the whole phase would end in `dropped`.
+  bool exit_on_failure = true;
+  /// Failure exit: time without any hand–object contact that ends the phase [s].
+  double no_contact_exit_time_s = 0.02;
 
   // --- Outcome -----------------------------------------------------------------------------
   double held_translation_m = 0.02;               ///< held: object moved less than this...
@@ -198,5 +241,12 @@ struct SimParams {
   /// the phases (PhaseSnapshot::phase_end false), e.g. to see when an object slips [s].
   double trace_interval_s = 0.0;
 };
+
+/// Sets the "(preset)" fields of `params` (phase durations, shake and rock frequencies, reach
+/// start, early exits) and params->protocol to `protocol`'s values; leaves the others.
+void apply_protocol(Protocol protocol, SimParams* params);
+
+/// Default SimParams with `protocol`'s preset applied.
+SimParams sim_params_for(Protocol protocol);
 
 }  // namespace cordgrasp

@@ -16,7 +16,7 @@ namespace cordgrasp {
 
 /// Which tests validate_grasp() runs after settle and close.
 struct SimTests {
-  bool lift = true;      ///< lift 10 cm in 1 s, hold 1 s (gravity −z_W)
+  bool lift = true;      ///< lift 10 cm, then hold (gravity −z_W; SimParams durations)
   bool shake = true;     ///< after lift: ±2 cm along x, y, z, then rock ±15° about x, y, z
   bool gravity6 = true;  ///< from the closed grasp again: hand fixed, gravity ±x, ±y, ±z
 };
@@ -72,21 +72,24 @@ class GraspSimulation {
   GraspSimulation(const GraspSimulation&) = delete;
   GraspSimulation& operator=(const GraspSimulation&) = delete;
 
-  /// Settle: gravity off, preshape held, hand at the planned pose, object at rest.
+  /// Settle: gravity off, joints held at the reach start (the preshape, or part of the way to
+  /// the plan: SimParams::reach_start_fraction), hand at the planned pose, object at rest.
   PhaseResult settle();
-  /// Close: reach — all driven joints follow minimum-jerk paths from the preshape to the plan,
+  /// Close: reach — all driven joints follow minimum-jerk paths from the reach start to the plan,
   /// arriving together; squeeze — actor joints are driven past the plan (in the actors'
   /// closing directions, or so as to press the planned contacts: squeeze_direction) until they
   /// stall or squeeze_max_time_s, the others hold the plan. Sets the
   /// reference pose of the object in the hand. No contact at the end = kDropped.
   PhaseResult close();
-  /// Lift: gravity −z_W; the hand rises lift_height_m in lift_time_s, then holds lift_hold_s.
+  /// Lift: gravity −z_W; the hand rises lift_height_m in lift_time_s, then holds lift_hold_s
+  /// (less with SimParams::rest_exit_time_s; early exits: SimParams::exit_on_failure).
   PhaseResult lift();
   /// Shake: gravity on; ±shake_amplitude_m along x_W, y_W, z_W (shake_time_s each), then rock
   /// ±rock_angle_rad about x_W, y_W, z_W through the GCP (rock_time_s each). Starts and ends
   /// at rest (faded sinusoids).
   PhaseResult shake();
-  /// Gravity6: hand fixed; gravity along +x, −x, +y, −y, +z, −z of W for gravity6_time_s each.
+  /// Gravity6: hand fixed; gravity along +x, −x, +y, −y, +z, −z of W for gravity6_time_s each
+  /// (less with SimParams::rest_exit_time_s).
   PhaseResult gravity6();
 
   /// Current world state labelled `phase`.
