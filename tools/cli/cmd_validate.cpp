@@ -29,6 +29,7 @@ struct ValidateOptions {
   std::string object;
   std::string units;
   std::string tests = "lift,shake,gravity6";
+  std::string protocol = "quick";
   std::optional<double> mu;
   std::optional<double> mass_kg;
   std::optional<double> density_kgm3;
@@ -93,6 +94,7 @@ void run_validate(const ValidateOptions& opt) {
   }
 
   SimParams params;
+  apply_protocol(protocol_from_string(opt.protocol), &params);  // the options below override it
   // μ: one value shared with the planner: the plan's unless --mu overrides it.
   params.contact = plan_contact_model(plan);
   if (opt.mu) params.contact.mu = *opt.mu;
@@ -206,6 +208,11 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--units", opt->units, "Units of --object: m, mm or auto (default: the plan's)")
       ->check(CLI::IsMember({"m", "mm", "auto"}));
   cmd->add_option("--tests", opt->tests, "Tests to run after closing: lift,shake,gravity6")
+      ->capture_default_str();
+  cmd->add_option("--protocol", opt->protocol,
+                  "Phase durations and early exits: quick, or thorough (long phases, no early "
+                  "exits; docs/physics.md)")
+      ->check(CLI::IsMember({"quick", "thorough"}))
       ->capture_default_str();
   cmd->add_option("--mu", opt->mu, "Friction coefficient (default: the plan's μ)");
   cmd->add_option("--mass", opt->mass_kg, "Object mass [kg] (default: density × volume)");
