@@ -168,8 +168,6 @@ struct GraspSimulation::Impl {
   /// at rest in the hand for SimParams::rest_exit_time_s.
   template <class Trajectory>
   bool run(double duration, const Trajectory& trajectory, bool rest_exit = false);
-  /// The object moves and turns slower than the rest_* speeds relative to the hand base.
-  bool object_at_rest() const;
   /// Largest fraction f ≤ SimParams::reach_start_fraction (f, 3f/4, f/2, f/4, 0) at which the
   /// joints q_preshape + f·(q − q_preshape) keep reach_start_clearance_m from the object.
   double reach_start_fraction_clear();
@@ -317,17 +315,6 @@ double GraspSimulation::Impl::reach_start_fraction_clear() {
     if (hand_object_distance() >= params.reach_start_clearance_m) return fraction;
   }
   return 0.0;
-}
-
-bool GraspSimulation::Impl::object_at_rest() const {
-  const btRigidBody& o = *object->body;
-  const btMultiBody& mb = *hand_body->mb;
-  const Eigen::Vector3d w_base = from_bt(mb.getBaseOmega());
-  const Eigen::Vector3d r = from_bt(o.getCenterOfMassPosition()) - from_bt(mb.getBasePos());
-  const Eigen::Vector3d v_rel =
-      from_bt(o.getLinearVelocity()) - (from_bt(mb.getBaseVel()) + w_base.cross(r));
-  const Eigen::Vector3d w_rel = from_bt(o.getAngularVelocity()) - w_base;
-  return v_rel.norm() < params.rest_speed_mps && w_rel.norm() < params.rest_angular_speed_radps;
 }
 
 GraspSimulation::Impl::~Impl() {
@@ -520,7 +507,8 @@ bool GraspSimulation::Impl::run(double duration, const Trajectory& trajectory, b
           : 0;
   const int no_contact_steps =
       std::max(1, static_cast<int>(std::lround(params.no_contact_exit_time_s / dt)));
-  int at_rest = 0;
+  int at_rest = 0;  // steps the object has stayed within the rest drift of X_BO_rest
+  Eigen::Isometry3d X_BO_rest = X_BO();
   int without_contact = 0;
   for (int s = 1; s <= steps; ++s) {
     step(trajectory(s * dt));
@@ -538,8 +526,14 @@ bool GraspSimulation::Impl::run(double duration, const Trajectory& trajectory, b
       }
     }
     if (rest_steps > 0) {
-      at_rest = object_at_rest() ? at_rest + 1 : 0;
-      if (at_rest >= rest_steps) return true;
+      double turned = 0.0;
+      const double drift = pose_change(X_BO_rest, &turned);
+      if (drift < params.rest_drift_m && turned < params.rest_drift_rad) {
+        if (++at_rest >= rest_steps) return true;
+      } else {
+        at_rest = 0;
+        X_BO_rest = X_BO();
+      }
     }
   }
   return true;

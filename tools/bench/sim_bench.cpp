@@ -5,6 +5,8 @@
 //     --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include <exception>
+
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/object_meshes.h"
@@ -123,7 +125,13 @@ BENCHMARK(BM_SolverSahMug)
 /// a failing grasp.
 void BM_ProtocolMug(benchmark::State& state, const char* hand_name, Protocol protocol,
                     double mu) {
-  const HandModel hand = load_hand(hand_name);
+  HandModel hand;
+  try {
+    hand = load_hand(hand_name);  // schunk_sah needs ../shared/data beside the source tree
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
   static const Mesh mesh = make_object_mesh("mug");
   SimParams params = sim_params_for(protocol);
   if (mu > 0.0) params.contact.mu = mu;
