@@ -125,6 +125,38 @@ TEST(ValidateGrasp, FailureExitEndsAFailedLiftEarlyWithTheSameOutcome) {
   EXPECT_GE(a->translation_m, params.held_translation_m);
 }
 
+TEST(ValidateGrasp, QuickRockTiltsTheHandBothWaysAboutEachAxis) {
+  /// The faded sine reaches its full amplitude once a quarter period after the fade-in.
+  constexpr double kReachedAmplitude = 0.9;
+  SimParams params = gripper_params(Protocol::kQuick);
+  params.trace_interval_s = params.time_step_s;
+  const size_t root = static_cast<size_t>(gripper().root_link);
+  std::vector<PhaseSnapshot> shake;
+  validate_grasp(box(), gripper(), centre_pinch(), params, SimTests{true, true, false},
+                 [&](const PhaseSnapshot& s) {
+                   if (s.phase.rfind("shake", 0) == 0) shake.push_back(s);
+                 });
+  const char* axes[3] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a) {
+    // The rock about axis a: samples after the previous segment's end up to this one's.
+    const std::string before = a == 0 ? "shake z" : std::string("shake rock ") + axes[a - 1];
+    const auto start = std::find_if(shake.begin(), shake.end(), [&](const PhaseSnapshot& s) {
+      return s.phase_end && s.phase == before;
+    });
+    ASSERT_NE(start, shake.end()) << before;
+    const Eigen::Matrix3d R_W0 = start->X_WL[root].linear();
+    double most = 0.0, least = 0.0;
+    for (auto it = start + 1; it != shake.end() && !it->phase_end; ++it) {
+      const Eigen::AngleAxisd turn(it->X_WL[root].linear() * R_W0.transpose());
+      const double about_axis = (turn.axis() * turn.angle())[a];
+      most = std::max(most, about_axis);
+      least = std::min(least, about_axis);
+    }
+    EXPECT_GT(most, kReachedAmplitude * params.rock_angle_rad) << axes[a];
+    EXPECT_LT(least, -kReachedAmplitude * params.rock_angle_rad) << axes[a];
+  }
+}
+
 /// Joint value of the gripper's driving finger joint at the end of settle under `params`.
 double settled_opening(const Grasp& grasp, const SimParams& params) {
   double opening = NAN;
