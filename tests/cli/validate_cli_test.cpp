@@ -104,8 +104,8 @@ class ValidateCli : public ::testing::Test {
 };
 
 TEST_F(ValidateCli, WritesSimJsonAndOneLinePerGraspAndATotal) {
-  const auto r = run_cordgrasp("validate --plan " + plan_path() + " --tests lift,shake --out " +
-                               out_path());
+  const auto r = run_cordgrasp("validate --plan " + plan_path() +
+                               " --tests lift,shake --protocol thorough --out " + out_path());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("grasp 0: held"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("grasp 1: held"), std::string::npos) << r.output;
@@ -119,6 +119,8 @@ TEST_F(ValidateCli, WritesSimJsonAndOneLinePerGraspAndATotal) {
   EXPECT_EQ(sim["inputs"]["plan_seed"], kPlanSeed);
   EXPECT_EQ(sim["inputs"]["hand"]["name"], "parallel_gripper");
   EXPECT_EQ(sim["parameters"]["tests"], "lift,shake");
+  EXPECT_EQ(sim["parameters"]["protocol"], "thorough");
+  EXPECT_EQ(sim["parameters"]["lift_hold_s"], 1.0);
   EXPECT_EQ(sim["parameters"]["mu"], 0.5);
   EXPECT_TRUE(sim["backend"].get<std::string>().find("Bullet") != std::string::npos);
   ASSERT_EQ(sim["grasps"].size(), 2u);
@@ -140,7 +142,8 @@ TEST_F(ValidateCli, WritesSimJsonAndOneLinePerGraspAndATotal) {
 
 TEST_F(ValidateCli, MuOverrideOfZeroDropsEveryGrasp) {
   const auto r = run_cordgrasp("validate --plan " + plan_path() +
-                               " --tests lift --mu 0 --grasps 1 -q --out " + out_path());
+                               " --tests lift --mu 0 --grasps 1 -q --protocol thorough --out " +
+                               out_path());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("held 0 / 1"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("validate: "), std::string::npos) << r.output;  // --quiet
@@ -205,7 +208,7 @@ TEST_F(ValidateCli, ContactSqueezeIsRecordedAndPressesNothingWhenThePlanHasNoCon
 TEST_F(ValidateCli, TraceWritesTheObjectInTheHandThroughEveryPhaseAsCsv) {
   const std::string trace = (dir_ / "trace.csv").string();
   const auto r = run_cordgrasp("validate --plan " + plan_path() +
-                               " --tests lift --grasps 1 -q --trace " + trace +
+                               " --tests lift --grasps 1 -q --protocol thorough --trace " + trace +
                                " --trace-interval 0.5 --out " + out_path());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::ifstream in(trace);
