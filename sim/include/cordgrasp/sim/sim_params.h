@@ -243,7 +243,7 @@ struct SimParams {
   double trace_interval_s = 0.0;
 };
 
-/// Sets the "(preset)" fields of `params` (phase durations, shake and rock frequencies, reach
+/// Sets the "(preset)" fields of `params` (phase durations, rock frequency, reach
 /// start, early exits) and params->protocol to `protocol`'s values; leaves the others.
 void apply_protocol(Protocol protocol, SimParams* params);
 
