@@ -1,4 +1,4 @@
-// Physics validation (issue 5): the parallel gripper on a box, friction, reach and motor
+// Physics validation (docs/physics.md): the parallel gripper on a box, friction, reach and motor
 // strength; determinism; object mass properties; parameter parsing.
 #include "cordgrasp/sim/validate_grasp.h"
 

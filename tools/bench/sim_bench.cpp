@@ -1,5 +1,5 @@
-// Physics validation speed (issue 5): close + lift + shake of one planned grasp, one thread.
-// Target: ≤ 0.3 s for the default SAH-like hand on a 3000-triangle object (counter
+// Physics validation speed (docs/physics.md §6): close + lift + shake of one planned grasp, one
+// thread. Target: ≤ 0.3 s for the default SAH-like hand on a 3000-triangle object (counter
 // realtime_factor: simulated seconds per CPU second). Run:
 //   build/tools/cordgrasp-microbench --benchmark_filter=Validate
 //     --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
