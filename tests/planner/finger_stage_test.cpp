@@ -1,4 +1,4 @@
-// Finger stage (spec §7) with hands built from primitives and the Bullet collider.
+// Finger stage (docs/algorithm.md §7) with hands built from primitives and the Bullet collider.
 #include "cordgrasp/core/finger_stage.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Grasp wrench space (spec §8): force closure and ε.
+// Grasp wrench space (docs/algorithm.md §8): force closure and ε.
 #include "cordgrasp/core/grasp_quality.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Physics validation of grasps from the cord planner (issue 5): the default hand's first
+// Physics validation of grasps from the cord planner (docs/physics.md): the default hand's first
 // force-closure grasp on the shipped cylinder holds, squeezed either way; on every shipped
 // object the simulation stays finite and stable.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Physics validation (issue 5): the parallel gripper on a box, friction, reach and motor
+// Physics validation (docs/physics.md): the parallel gripper on a box, friction, reach and motor
 // strength; determinism; object mass properties; parameter parsing.
 #include "cordgrasp/sim/validate_grasp.h"
 
@@ -27,7 +27,7 @@ constexpr double kInertiaRelTol = 1e-9;
 /// The gripper's flat pads touch a face over a patch: soft-finger contacts of this radius, as
 /// the planner models two-finger grippers (tools/hold_rates.sh). With point contacts nothing
 /// but numerical noise keeps the pinched box from spinning about the line through the pads
-/// (docs/physics.md).
+/// (docs/notes/2026-11-22-physics-measurements.md).
 constexpr double kPadPatchRadius_m = 0.005;
 
 /// Default simulation parameters with the pads' soft-finger contacts.

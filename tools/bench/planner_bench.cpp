@@ -1,4 +1,4 @@
-// Grasp planner benchmarks (issue 4 speed targets), Schunk SAH, one thread:
+// Grasp planner benchmarks (speed targets), Schunk SAH, one thread:
 //   CordFirstFC/<set>/<object>     loaded mesh → first force-closure grasp (collider, cord
 //                                  exploration, finger stage, wrench space), 2 s cap
 //   GenericFirstFC/<set>/<object>  the same with the generic baseline planner

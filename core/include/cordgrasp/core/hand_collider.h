@@ -6,7 +6,8 @@
 
 namespace cordgrasp {
 
-/// Closest points between one hand link and the object, in the object frame (spec §7.4).
+/// Closest points between one hand link and the object, in the object frame
+/// (docs/algorithm.md §7.4).
 struct LinkObjectProximity {
   double distance_m = 0.0;  ///< signed: > 0 separated, < 0 penetration depth [m]
   Eigen::Vector3d p_link_O = Eigen::Vector3d::Zero();    ///< witness point on the link [m]

@@ -6,8 +6,9 @@
 
 namespace cordgrasp {
 
-/// Bounding-volume hierarchy over a triangle soup, used to slice it with planes (spec §2.2) and
-/// to cast segments against it (spec §2.3). Holds its own copy of the geometry.
+/// Bounding-volume hierarchy over a triangle soup, used to slice it with planes (docs/algorithm.md
+/// §2.1) and to cast segments against it (docs/algorithm.md §2.2). Holds its own copy of the
+/// geometry.
 struct MeshBvh {
   struct Node {
     Eigen::Vector3d lo = Eigen::Vector3d::Zero();      ///< box min [m]
