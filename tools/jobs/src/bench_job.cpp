@@ -554,8 +554,8 @@ std::string bench_summary_markdown(const std::vector<BenchRow>& rows,
   if (!info.shard.empty()) out << " (shard " << info.shard << ")";
   out << "\n- physics tests on each attempt's first grasp: "
       << (info.tests.empty() ? "none" : info.tests) << "\n";
-  out << "- times are wall-clock seconds; α (skewness, spec §9) and ε of the first force-closure "
-         "grasp; first FC, α and ε over the attempts that found a grasp; sim held = first "
+  out << "- times are wall-clock seconds; α (skewness, docs/algorithm.md §9) and ε of the "
+         "first force-closure grasp; first FC, α and ε over the attempts that found a grasp; sim held = first "
          "grasps that held through every test / first grasps simulated.\n\n";
 
   // Groups in attempt order.

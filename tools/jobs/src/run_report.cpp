@@ -91,8 +91,9 @@ std::string run_report_markdown(const RunReport& rep) {
       md << "– | – |\n";
     }
   }
-  md << "\nα: skewness (0 = the hand's axis on the object's principal axis; spec §9). "
-        "ε: wrench-space quality (spec §8). χ: XOR measure of the grasp region (spec §6).\n";
+  md << "\nα: skewness (0 = the hand's axis on the object's principal axis; "
+        "docs/algorithm.md §9). ε: wrench-space quality (docs/algorithm.md §8). χ: XOR measure "
+        "of the grasp region (docs/algorithm.md §6).\n";
 
   md << "\n## Timings\n\n| stage | wall [s] |\n|---|---|\n";
   if (plan.planner == "cord") md << "| cord exploration | " << num(s.exploration_s) << " |\n";

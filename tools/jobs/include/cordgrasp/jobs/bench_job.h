@@ -1,5 +1,5 @@
 #pragma once
-// `cordgrasp bench` / `cordgrasp merge` (issue 7): the list of attempts (object × hand ×
+// `cordgrasp bench` / `cordgrasp merge`: the list of attempts (object × hand ×
 // planner × repeat), one attempt run in-process, the results.csv row, the thread pool, shards,
 // merging and summary.md.
 //
