@@ -183,7 +183,7 @@ int run_bench(const BenchOptions& opt) {
       throw InputError("bench: --planners: '" + p + "' is not cord or generic");
   params.objects = expand_object_args(opt.objects);
   params.repeats = opt.repeats;
-  params.seed = opt.job.seed;
+  params.seed = opt.job.plan.seed;
   params.job = opt.job;
   params.tests = opt.tests;
   params.sim_cache_dir = opt.cache_dir;

@@ -11,10 +11,11 @@
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/palm_width.h"
-#include "json_util.h"
 
 namespace cordgrasp::cli {
 namespace {
+
+nlohmann::json to_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 struct ExploreOptions {
   std::string object;
@@ -79,10 +80,8 @@ void run_explore(const ExploreOptions& opt) {
   params.seed = opt.seed;
   params.local_improvement = !opt.no_local_improvement;
   params.time_limit_s = opt.time_limit_s;
-  params.side_cord_policy = opt.side_cords == "discard" ? SideCordPolicy::kDiscardSet
-                            : opt.side_cords == "shrink" ? SideCordPolicy::kShrink
-                                                         : SideCordPolicy::kEmptyWhenMissed;
-  params.xor_backend = opt.xor_backend == "convex" ? XorBackend::kConvex : XorBackend::kClipper;
+  params.side_cord_policy = parse_side_cord_policy(opt.side_cords);
+  params.xor_backend = parse_xor_backend(opt.xor_backend);
   ExplorationStats stats;
   const std::vector<GraspRegion> regions = explore_cords(mesh, palm_width_m, params, &stats);
 

@@ -86,8 +86,8 @@ void run(const RunOptions& opt) {
   // 1. Plan.
   progress.say("plan: " + opt.job.planner + " planner, hand " + hand.name + ", object " +
                mesh->name + " (" + std::to_string(mesh->triangles.size()) + " triangles), up to " +
-               std::to_string(opt.job.grasps) + " grasps within " +
-               fixed(opt.job.time_limit_s, 0) + " s");
+               std::to_string(opt.job.plan.grasps) + " grasps within " +
+               fixed(opt.job.plan.time_limit_s, 0) + " s");
   auto t = Clock::now();
   RunReport report;
   report.plan = plan_job(opt.job, *mesh, object_path, hand);
@@ -97,7 +97,7 @@ void run(const RunOptions& opt) {
   write_plan_file(plan_path, plan, hand);
   // Physics sees the plan as written (poses as quaternions), so `cordgrasp validate --plan
   // plan.json` later reproduces these outcomes exactly.
-  const PlanDocument written = plan_from_json(read_plan_json(plan_path), hand);
+  const PlanDocument written = plan_from_json(read_plan_json(plan_path), hand, plan_path);
   const int n = static_cast<int>(plan.grasps.size());
   progress.say("plan: " + std::to_string(n) + " force-closure grasp(s), " +
                std::to_string(plan.stats.attempts) + " attempts");
@@ -149,7 +149,7 @@ void run(const RunOptions& opt) {
     Renderer renderer;
     const HandMeshes meshes = make_hand_meshes(hand);
     OverlayStyle overlay;
-    overlay.friction_coefficient = opt.job.mu;
+    overlay.friction_coefficient = opt.job.plan.quality.contact.mu;
     std::vector<Image> tiles;
     std::vector<std::string> captions;
     for (int k = 0; k < n; ++k) {
@@ -222,7 +222,7 @@ void run(const RunOptions& opt) {
 
 void add_run_command(CLI::App& app) {
   auto opt = std::make_shared<RunOptions>();
-  opt->job.grasps = 3;
+  opt->job.plan.grasps = 3;
   CLI::App* cmd = app.add_subcommand(
       "run", "The main job: plan grasps, check them in Bullet (lift, shake), render them, and "
              "write plan.json, sim.json, PNGs and report.md");

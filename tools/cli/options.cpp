@@ -1,42 +1,66 @@
 #include "options.h"
 
+#include <stdexcept>
+#include <string>
+
+#include "cordgrasp/jobs/parse_name.h"
+
 namespace cordgrasp::cli {
+
+namespace {
+
+// An option naming an enumerator of `*field` (its to_string names; parse_name rejects others),
+// with the field's current value as the default shown by --help.
+template <typename E>
+CLI::Option* add_enum_option(CLI::App* cmd, const std::string& name, E* field,
+                             const std::string& help) {
+  return cmd
+      ->add_option_function<std::string>(
+          name, [field](const std::string& text) { parse_name(text, field); }, help)
+      ->check([](const std::string& text) {
+        E value{};
+        try {
+          parse_name(text, &value);
+        } catch (const std::invalid_argument& e) {
+          return std::string(e.what());
+        }
+        return std::string();
+      })
+      ->default_str(to_string(*field));
+}
+
+}  // namespace
 
 void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
   cmd->add_option("--planner", p.planner, "cord (Li et al. 2015) or generic (Simox baseline)")
       ->check(CLI::IsMember({"cord", "generic"}))
       ->capture_default_str();
-  cmd->add_option("--grasps,-n", p.grasps, "Stop after this many force-closure grasps")
+  cmd->add_option("--grasps,-n", p.plan.grasps, "Stop after this many force-closure grasps")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  cmd->add_option("--time-limit", p.time_limit_s, "Wall-clock limit of the plan [s]")
+  cmd->add_option("--time-limit", p.plan.time_limit_s, "Wall-clock limit of the plan [s]")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  cmd->add_option("--seed", p.seed, "Seed of every random choice")->capture_default_str();
-  cmd->add_option("--mu", p.mu, "Friction coefficient of the wrench space and the physics")
+  cmd->add_option("--seed", p.plan.seed, "Seed of every random choice")->capture_default_str();
+  cmd->add_option("--mu", p.plan.quality.contact.mu,
+                  "Friction coefficient of the wrench space and the physics")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--soft-finger-radius", p.soft_finger_radius_m,
                   "Contact patch radius for torsional friction [m]; 0 = point contacts "
                   "(default: the hand's soft_finger_radius_m, 5 mm for the grippers)")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--side-cords", p.side_cords,
+  add_enum_option(cmd, "--side-cords", &p.cord.side_cord_policy,
                   "Cord: a scanned cord that fails: empty (missed object scores as empty), "
-                  "discard (spec 4.5) or shrink (spec 11.6)")
-      ->check(CLI::IsMember({"empty", "discard", "shrink"}))
-      ->capture_default_str();
-  cmd->add_option("--quality", p.quality,
-                  "textbook (real mu, eps = origin to hull) or simox (compat quirks, spec 8)")
-      ->check(CLI::IsMember({"textbook", "simox"}))
-      ->capture_default_str();
-  cmd->add_option("--units", p.units, "Units of the object file: m, mm or auto")
-      ->check(CLI::IsMember({"m", "mm", "auto"}))
-      ->capture_default_str();
-  cmd->add_option("--sets", p.cord_sets, "Cord: valid sets to sample before local improvement")
+                  "discard (spec 4.5) or shrink (spec 11.6)");
+  add_enum_option(cmd, "--quality", &p.plan.quality.mode,
+                  "textbook (real mu, eps = origin to hull) or simox (compat quirks, spec 8)");
+  add_enum_option(cmd, "--units", &p.units, "Units of the object file: m, mm or auto");
+  cmd->add_option("--sets", p.cord.sets, "Cord: valid sets to sample before local improvement")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->add_flag_callback(
-      "--no-local-improvement", [&p]() { p.cord_local_improvement = false; },
+      "--no-local-improvement", [&p]() { p.cord.local_improvement = false; },
       "Cord: skip the local improvement of the sampled sets");
 }
 
