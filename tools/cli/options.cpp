@@ -1,35 +1,6 @@
 #include "options.h"
 
-#include <stdexcept>
-#include <string>
-
-#include "cordgrasp/jobs/parse_name.h"
-
 namespace cordgrasp::cli {
-
-namespace {
-
-// An option naming an enumerator of `*field` (its to_string names; parse_name rejects others),
-// with the field's current value as the default shown by --help.
-template <typename E>
-CLI::Option* add_enum_option(CLI::App* cmd, const std::string& name, E* field,
-                             const std::string& help) {
-  return cmd
-      ->add_option_function<std::string>(
-          name, [field](const std::string& text) { parse_name(text, field); }, help)
-      ->check([](const std::string& text) {
-        E value{};
-        try {
-          parse_name(text, &value);
-        } catch (const std::invalid_argument& e) {
-          return std::string(e.what());
-        }
-        return std::string();
-      })
-      ->default_str(to_string(*field));
-}
-
-}  // namespace
 
 void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
   cmd->add_option("--planner", p.planner, "cord (Li et al. 2015) or generic (Simox baseline)")

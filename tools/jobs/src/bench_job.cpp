@@ -514,12 +514,14 @@ std::vector<BenchResult> run_bench_attempts(const std::vector<BenchAttempt>& att
 nlohmann::json bench_params_to_json(const BenchParams& p) {
   PlanJobParams j = p.job;
   j.plan.seed = p.seed;  // per attempt: seed + repeat
+  nlohmann::json job = params_to_json(j);
+  job.erase("planner");  // per attempt: "planners"
   return {{"hands", p.hands},
           {"objects", p.objects},
           {"planners", p.planners},
           {"repeats", p.repeats},
           {"seed", p.seed},
-          {"job", params_to_json(j)},
+          {"job", job},
           {"tests", p.tests}};
 }
 
