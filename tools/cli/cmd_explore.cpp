@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "commands.h"
+#include "options.h"
 #include "cordgrasp/core/atomic_file.h"
 #include "cordgrasp/core/explore_cords.h"
 #include "cordgrasp/core/hand_io.h"
@@ -19,15 +20,10 @@ nlohmann::json to_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()};
 
 struct ExploreOptions {
   std::string object;
-  std::string units = "m";
+  LengthUnits units = LengthUnits::kMeters;
   std::string hand;  // empty: the shipped default hand (unless --palm-width-m)
   double palm_width_m = 0.0;
-  int sets = 20;
-  std::uint64_t seed = 1;
-  bool no_local_improvement = false;
-  std::string side_cords = "empty";
-  std::string xor_backend = "convex";
-  double time_limit_s = 30.0;
+  CordParams cord;  // options bind to its fields: --help shows its defaults
   int top = 20;
   std::string json_path;
 };
@@ -65,7 +61,7 @@ std::string point_text(const Eigen::Vector3d& p) {
 
 void run_explore(const ExploreOptions& opt) {
   MeshLoadOptions load;
-  load.units = parse_length_units(opt.units);
+  load.units = opt.units;
   const Mesh mesh = load_mesh(opt.object, load);
   std::string hand_text = "--palm-width-m";
   double palm_width_m = opt.palm_width_m;
@@ -75,18 +71,12 @@ void run_explore(const ExploreOptions& opt) {
     palm_width_m = palm_width(hand);
     hand_text = "hand " + hand_name;
   }
-  CordParams params;
-  params.sets = opt.sets;
-  params.seed = opt.seed;
-  params.local_improvement = !opt.no_local_improvement;
-  params.time_limit_s = opt.time_limit_s;
-  params.side_cord_policy = parse_side_cord_policy(opt.side_cords);
-  params.xor_backend = parse_xor_backend(opt.xor_backend);
+  const CordParams& params = opt.cord;
   ExplorationStats stats;
   const std::vector<GraspRegion> regions = explore_cords(mesh, palm_width_m, params, &stats);
 
   std::cout << "object   " << mesh.name << "  (" << mesh.triangles.size() << " triangles)  "
-            << "W_palm " << palm_width_m << " m (" << hand_text << ")  seed " << opt.seed << '\n'
+            << "W_palm " << palm_width_m << " m (" << hand_text << ")  seed " << params.seed << '\n'
             << "explored " << std::fixed << std::setprecision(4) << stats.time_s << " s  ("
             << "sampling " << stats.sampling_time_s << " s, local improvement "
             << stats.improvement_time_s << " s)" << (stats.hit_time_limit ? "  TIME LIMIT" : "")
@@ -126,12 +116,12 @@ void run_explore(const ExploreOptions& opt) {
     j["triangles"] = mesh.triangles.size();
     j["palm_width_m"] = palm_width_m;
     j["palm_width_from"] = hand_text;
-    j["seed"] = opt.seed;
-    j["sets"] = opt.sets;
+    j["seed"] = params.seed;
+    j["sets"] = params.sets;
     j["local_improvement"] = params.local_improvement;
-    j["time_limit_s"] = opt.time_limit_s;
-    j["side_cords"] = opt.side_cords;
-    j["xor_backend"] = opt.xor_backend;
+    j["time_limit_s"] = params.time_limit_s;
+    j["side_cords"] = to_string(params.side_cord_policy);
+    j["xor_backend"] = to_string(params.xor_backend);
     j["stats"] = {{"triangles_sampled", stats.triangles_sampled},
                   {"triangles_acute", stats.triangles_acute},
                   {"seed_cords", stats.seed_cords},
@@ -169,30 +159,26 @@ void add_explore_command(CLI::App& app) {
   cmd->add_option("--palm-width-m", opt->palm_width_m, "Palm width W_palm instead of a hand [m]")
       ->check(CLI::PositiveNumber)
       ->excludes(hand);
-  cmd->add_option("--sets", opt->sets, "Valid sets to sample before local improvement (K)")
+  CordParams* cord = &opt->cord;
+  cmd->add_option("--sets", cord->sets, "Valid sets to sample before local improvement (K)")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
-  cmd->add_option("--seed", opt->seed, "Seed of the random generator")->capture_default_str();
-  cmd->add_flag("--no-local-improvement", opt->no_local_improvement,
-                "Skip the local-improvement pass");
-  cmd->add_option("--side-cords", opt->side_cords,
+  cmd->add_option("--seed", cord->seed, "Seed of the random generator")->capture_default_str();
+  cmd->add_flag_callback(
+      "--no-local-improvement", [cord]() { cord->local_improvement = false; },
+      "Skip the local-improvement pass");
+  add_enum_option(cmd, "--side-cords", &cord->side_cord_policy,
                   "When a scanned cord fails: empty (a cord that misses the object counts as an "
                   "empty polygon in chi; other failures discard the set), discard (spec 4.5: "
-                  "discard the set), shrink (spec 11.6: shrink n to the cords that succeed)")
-      ->check(CLI::IsMember({"empty", "discard", "shrink"}))
-      ->capture_default_str();
-  cmd->add_option("--xor", opt->xor_backend,
+                  "discard the set), shrink (spec 11.6: shrink n to the cords that succeed)");
+  add_enum_option(cmd, "--xor", &cord->xor_backend,
                   "chi backend: clipper (Clipper 6.4.2 integer XOR, spec 6) or convex (exact "
-                  "convex clipping, same value, faster)")
-      ->check(CLI::IsMember({"clipper", "convex"}))
-      ->capture_default_str();
-  cmd->add_option("--time-limit", opt->time_limit_s,
+                  "convex clipping, same value, faster)");
+  cmd->add_option("--time-limit", cord->time_limit_s,
                   "Wall-clock cap [s]; 0 = none. Hitting it makes results time-dependent")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  cmd->add_option("--units", opt->units, "Units of the object file: m, mm or auto")
-      ->check(CLI::IsMember({"m", "mm", "auto"}))
-      ->capture_default_str();
+  add_enum_option(cmd, "--units", &opt->units, "Units of the object file: m, mm or auto");
   cmd->add_option("--top", opt->top, "Regions to print (0 = all)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
