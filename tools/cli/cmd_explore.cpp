@@ -76,7 +76,8 @@ void run_explore(const ExploreOptions& opt) {
   const std::vector<GraspRegion> regions = explore_cords(mesh, palm_width_m, params, &stats);
 
   std::cout << "object   " << mesh.name << "  (" << mesh.triangles.size() << " triangles)  "
-            << "W_palm " << palm_width_m << " m (" << hand_text << ")  seed " << params.seed << '\n'
+            << "W_palm " << palm_width_m << " m (" << hand_text << ")  seed " << params.seed
+            << '\n'
             << "explored " << std::fixed << std::setprecision(4) << stats.time_s << " s  ("
             << "sampling " << stats.sampling_time_s << " s, local improvement "
             << stats.improvement_time_s << " s)" << (stats.hit_time_limit ? "  TIME LIMIT" : "")

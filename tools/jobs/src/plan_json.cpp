@@ -246,7 +246,8 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
         try {
           grasp.region = region_from_json(g["region"]);
         } catch (const InputError& e) {
-          throw InputError(source + ": grasp " + std::to_string(p.grasps.size()) + ": " + e.what());
+          throw InputError(source + ": grasp " + std::to_string(p.grasps.size()) + ": " +
+                           e.what());
         }
       }
       const auto t = g.value("timings_s", nlohmann::json::object());
