@@ -113,8 +113,8 @@ TEST(CliRun, GripperUsesItsHandsSoftFingerRadiusInPlanAndPhysics) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json plan = read_json(dir.file("plan.json"));
   const nlohmann::json sim = read_json(dir.file("sim.json"));
-  EXPECT_EQ(plan["parameters"]["soft_finger_radius_m"], 0.005);
-  EXPECT_EQ(sim["parameters"]["soft_finger_radius_m"], 0.005);
+  EXPECT_EQ(plan["parameters"]["quality"]["contact"]["soft_finger_radius_m"], 0.005);
+  EXPECT_EQ(sim["parameters"]["contact"]["soft_finger_radius_m"], 0.005);
   EXPECT_EQ(plan["grasps"].size(), 1u);
 }
 

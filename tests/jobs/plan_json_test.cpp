@@ -1,4 +1,4 @@
-// plan.json round trip (tools/cli/plan_json.h).
+// plan.json round trip (tools/jobs/include/cordgrasp/jobs/plan_json.h).
 #include "cordgrasp/jobs/plan_json.h"
 
 #include <gtest/gtest.h>
@@ -8,6 +8,7 @@
 
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
+#include "cordgrasp/jobs/plan_job.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
@@ -29,7 +30,18 @@ PlanDocument sample_plan(const HandModel& hand) {
   doc.object_name = "box";
   doc.object_triangles = 12;
   doc.planner = "cord";
-  doc.parameters = {{"planner", "cord"}, {"seed", 7}, {"mu", 0.5}};
+  doc.params.seed = 7;
+  doc.params.quality.contact.mu = 0.7;
+  doc.params.quality.contact.soft_finger_radius_m = 0.004;
+  doc.palm_width_m = 0.085;
+  CordParams cord;
+  cord.seed = 7;
+  cord.xi_min_m = 0.02;       // fields the old plan.json left out: the replay needs them
+  cord.eps_len_m = 2e-9;
+  cord.xor_backend = XorBackend::kClipper;
+  cord.sphere_sequence = SphereSequence::kFibonacci;
+  cord.side_cord_policy = SideCordPolicy::kShrink;
+  doc.cord = cord;
   doc.stats.attempts = 3;
   doc.stats.force_closure = 1;
   doc.stats.first_force_closure_s = 0.25;
@@ -67,7 +79,16 @@ TEST(PlanJson, RoundTripsEveryField) {
   const PlanDocument back = plan_from_json(j, hand);
   EXPECT_EQ(back.hand_name, hand.name);
   EXPECT_EQ(back.planner, "cord");
-  EXPECT_EQ(back.parameters["seed"], 7);
+  EXPECT_EQ(back.params.seed, 7u);
+  EXPECT_EQ(plan_contact_model(back).mu, 0.7);
+  EXPECT_EQ(plan_contact_model(back).soft_finger_radius_m, 0.004);
+  EXPECT_EQ(back.palm_width_m, 0.085);
+  ASSERT_TRUE(back.cord.has_value());
+  EXPECT_EQ(back.cord->xi_min_m, 0.02);
+  EXPECT_EQ(back.cord->eps_len_m, 2e-9);
+  EXPECT_EQ(back.cord->xor_backend, XorBackend::kClipper);
+  EXPECT_EQ(back.cord->sphere_sequence, SphereSequence::kFibonacci);
+  EXPECT_EQ(back.cord->side_cord_policy, SideCordPolicy::kShrink);
   EXPECT_EQ(back.stats.attempts, 3);
   ASSERT_TRUE(back.stats.first_force_closure_s.has_value());
   ASSERT_EQ(back.grasps.size(), 1u);
@@ -108,6 +129,69 @@ TEST(PlanJson, ReadNamesTheFileWhenMissingOrNotAPlan) {
     read_plan_json(path);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(path);
+}
+
+std::string decode_error(const nlohmann::json& j, const HandModel& hand) {
+  try {
+    plan_from_json(j, hand, "/abs/plan.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(PlanJson, AMissingParameterIsAnErrorNamingFileAndKey) {
+  const HandModel hand = load_hand("parallel_gripper");
+  const nlohmann::json full = plan_to_json(sample_plan(hand), hand);
+  nlohmann::json j = full;
+  j["parameters"].erase("seed");
+  EXPECT_EQ(decode_error(j, hand), "/abs/plan.json: parameters.seed: missing");
+  j = full;
+  j["parameters"]["quality"]["contact"].erase("mu");  // no silent default μ
+  EXPECT_EQ(decode_error(j, hand), "/abs/plan.json: parameters.quality.contact.mu: missing");
+  j = full;
+  j["parameters"]["cord"].erase("xi_min_m");
+  EXPECT_EQ(decode_error(j, hand), "/abs/plan.json: parameters.cord.xi_min_m: missing");
+  j = full;
+  j.erase("parameters");
+  EXPECT_EQ(decode_error(j, hand), "/abs/plan.json: parameters: missing");
+}
+
+TEST(PlanJson, AnUnknownPlannerOrEnumNameIsAnError) {
+  const HandModel hand = load_hand("parallel_gripper");
+  nlohmann::json j = plan_to_json(sample_plan(hand), hand);
+  j["parameters"]["cord"]["side_cord_policy"] = "sometimes";
+  EXPECT_NE(decode_error(j, hand).find("allowed: discard, shrink, empty"), std::string::npos)
+      << decode_error(j, hand);
+  j = plan_to_json(sample_plan(hand), hand);
+  j["parameters"]["planner"] = "magic";
+  EXPECT_NE(decode_error(j, hand).find("allowed: cord, generic"), std::string::npos);
+}
+
+TEST(PlanJson, AGenericPlanHasNoCordParameters) {
+  const HandModel hand = load_hand("parallel_gripper");
+  PlanDocument doc = sample_plan(hand);
+  doc.planner = "generic";
+  doc.cord.reset();
+  const nlohmann::json j = plan_to_json(doc, hand);
+  EXPECT_TRUE(j.at("parameters").at("cord").is_null());
+  EXPECT_FALSE(plan_from_json(j, hand).cord.has_value());
+}
+
+TEST(PlanJson, RefusesFormatVersion1WithAMessage) {
+  const HandModel hand = load_hand("parallel_gripper");
+  nlohmann::json j = plan_to_json(sample_plan(hand), hand);
+  j["format_version"] = 1;
+  const std::string path = temp_path("v1.json");
+  std::ofstream(path) << j.dump();
+  try {
+    read_plan_json(path);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("format_version 1"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
   }
   std::filesystem::remove(path);

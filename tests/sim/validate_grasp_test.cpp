@@ -281,14 +281,14 @@ TEST(SimTestsFromString, ParsesSubsetsAndRejectsUnknownNames) {
 TEST(ObjectShapeFromString, RoundTripsEveryShape) {
   for (ObjectShape s : {ObjectShape::kAuto, ObjectShape::kConvexHull, ObjectShape::kDecomposition,
                         ObjectShape::kGImpact})
-    EXPECT_EQ(object_shape_from_string(to_string(s)), s);
-  EXPECT_THROW(object_shape_from_string("vhacd"), std::invalid_argument);
+    EXPECT_EQ(parse_object_shape(to_string(s)), s);
+  EXPECT_THROW(parse_object_shape("vhacd"), std::invalid_argument);
 }
 
 TEST(SqueezeDirectionFromString, RoundTripsEveryDirection) {
   for (SqueezeDirection d : {SqueezeDirection::kActor, SqueezeDirection::kContactNormals})
-    EXPECT_EQ(squeeze_direction_from_string(to_string(d)), d);
-  EXPECT_THROW(squeeze_direction_from_string("normals"), std::invalid_argument);
+    EXPECT_EQ(parse_squeeze_direction(to_string(d)), d);
+  EXPECT_THROW(parse_squeeze_direction("normals"), std::invalid_argument);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "commands.h"
+#include "options.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/jobs/explore_job.h"
 
@@ -21,10 +22,12 @@ std::string point_text(const Eigen::Vector3d& p) {
 
 void print_regions(const ExploreOutcome& out, const ExploreJobParams& opt) {
   std::cout << "object   " << out.object_name << "  (" << out.triangles << " triangles)  "
-            << "W_palm " << out.palm_width_m << " m (" << out.palm_width_from << ")  seed " << opt.seed << '\n'
+            << "W_palm " << out.palm_width_m << " m (" << out.palm_width_from << ")  seed "
+            << opt.cord.seed << '\n'
             << "explored " << std::fixed << std::setprecision(4) << out.stats.time_s << " s  ("
             << "sampling " << out.stats.sampling_time_s << " s, local improvement "
-            << out.stats.improvement_time_s << " s)" << (out.stats.hit_time_limit ? "  TIME LIMIT" : "")
+            << out.stats.improvement_time_s << " s)"
+            << (out.stats.hit_time_limit ? "  TIME LIMIT" : "")
             << '\n'
             << "sampled  " << out.stats.triangles_sampled << " triangles, " << out.stats.triangles_acute
             << " acute, " << out.stats.seed_cords << " seed cords, " << out.stats.sets_tried
@@ -72,30 +75,26 @@ void add_explore_command(CLI::App& app) {
   cmd->add_option("--palm-width-m", opt->palm_width_m, "Palm width W_palm instead of a hand [m]")
       ->check(CLI::PositiveNumber)
       ->excludes(hand);
-  cmd->add_option("--sets", opt->sets, "Valid sets to sample before local improvement (K)")
+  CordParams* cord = &opt->cord;
+  cmd->add_option("--sets", cord->sets, "Valid sets to sample before local improvement (K)")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
-  cmd->add_option("--seed", opt->seed, "Seed of the random generator")->capture_default_str();
-  cmd->add_flag("--no-local-improvement", opt->no_local_improvement,
-                "Skip the local-improvement pass");
-  cmd->add_option("--side-cords", opt->side_cords,
+  cmd->add_option("--seed", cord->seed, "Seed of the random generator")->capture_default_str();
+  cmd->add_flag_callback(
+      "--no-local-improvement", [cord]() { cord->local_improvement = false; },
+      "Skip the local-improvement pass");
+  add_enum_option(cmd, "--side-cords", &cord->side_cord_policy,
                   "When a scanned cord fails: empty (a cord that misses the object counts as an "
-                  "empty polygon in chi; other failures discard the set), discard (spec 4.5: "
-                  "discard the set), shrink (spec 11.6: shrink n to the cords that succeed)")
-      ->check(CLI::IsMember({"empty", "discard", "shrink"}))
-      ->capture_default_str();
-  cmd->add_option("--xor", opt->xor_backend,
-                  "chi backend: clipper (Clipper 6.4.2 integer XOR, spec 6) or convex (exact "
-                  "convex clipping, same value, faster)")
-      ->check(CLI::IsMember({"clipper", "convex"}))
-      ->capture_default_str();
-  cmd->add_option("--time-limit", opt->time_limit_s,
+                  "empty polygon in chi; other failures discard the set), discard (paper: discard "
+                  "the set), shrink (shrink n to the cords that succeed; docs/algorithm.md)");
+  add_enum_option(cmd, "--xor", &cord->xor_backend,
+                  "chi backend: clipper (Clipper 6.4.2 integer XOR, Eq. (1)) or convex (exact "
+                  "convex clipping, same value, faster)");
+  cmd->add_option("--time-limit", cord->time_limit_s,
                   "Wall-clock cap [s]; 0 = none. Hitting it makes results time-dependent")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  cmd->add_option("--units", opt->units, "Units of the object file: m, mm or auto")
-      ->check(CLI::IsMember({"m", "mm", "auto"}))
-      ->capture_default_str();
+  add_enum_option(cmd, "--units", &opt->units, "Units of the object file: m, mm or auto");
   cmd->add_option("--top", opt->top, "Regions to print (0 = all)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();

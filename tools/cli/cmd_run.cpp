@@ -21,7 +21,7 @@ void add_run_command(CLI::App& app) {
   auto opt = std::make_shared<Options>();
   opt->run.hand = default_hand_name();
   opt->run.object = default_object_name();
-  opt->run.plan.grasps = 3;
+  opt->run.job.plan.grasps = 3;
   opt->run.picture.size = "800x600";
   CLI::App* cmd = app.add_subcommand(
       "run", "The main job: plan grasps, check them in Bullet (lift, shake), render them, and "
@@ -30,7 +30,7 @@ void add_run_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--object,-o", opt->run.object, "Object mesh file or shipped object name")
       ->capture_default_str();
-  add_plan_job_options(cmd, opt->run.plan);
+  add_plan_job_options(cmd, opt->run.job);
   cmd->add_option("--tests", opt->run.tests,
                   "Physics tests: any of lift,shake,gravity6, or none")
       ->capture_default_str();

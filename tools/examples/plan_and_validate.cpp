@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
   const HandModel hand = load_hand(default_hand_name());
 
   PlanJobParams planner;  // the cord planner with its defaults; seed 1
-  planner.grasps = 2;
+  planner.plan.grasps = 2;
   const PlanDocument plan = plan_job(planner, *mesh, object_path, hand);
   if (plan.grasps.empty()) return std::printf("no force-closure grasp\n"), 1;
 

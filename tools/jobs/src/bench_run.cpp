@@ -114,7 +114,7 @@ BenchRunOutcome run_bench(const BenchRunParams& opt, const BenchRunCallbacks& cb
       throw InputError("bench: --planners: '" + p + "' is not cord or generic");
   params.objects = expand_object_args(opt.objects);
   params.repeats = opt.repeats;
-  params.seed = opt.job.seed;
+  params.seed = opt.job.plan.seed;
   params.job = opt.job;
   params.tests = opt.tests;
   params.sim_cache_dir = opt.cache_dir;

@@ -14,7 +14,7 @@ namespace cordgrasp {
 ExploreOutcome explore_job(const ExploreJobParams& opt) {
   ExploreOutcome out;
   MeshLoadOptions load;
-  load.units = parse_length_units(opt.units);
+  load.units = opt.units;
   const Mesh mesh = load_mesh(opt.object, load);
   out.object_name = mesh.name;
   out.triangles = static_cast<int>(mesh.triangles.size());
@@ -26,15 +26,7 @@ ExploreOutcome explore_job(const ExploreJobParams& opt) {
     palm_width_m = palm_width(hand);
     hand_text = "hand " + hand_name;
   }
-  CordParams params;
-  params.sets = opt.sets;
-  params.seed = opt.seed;
-  params.local_improvement = !opt.no_local_improvement;
-  params.time_limit_s = opt.time_limit_s;
-  params.side_cord_policy = opt.side_cords == "discard" ? SideCordPolicy::kDiscardSet
-                            : opt.side_cords == "shrink" ? SideCordPolicy::kShrink
-                                                         : SideCordPolicy::kEmptyWhenMissed;
-  params.xor_backend = opt.xor_backend == "convex" ? XorBackend::kConvex : XorBackend::kClipper;
+  const CordParams& params = opt.cord;
   ExplorationStats& stats = out.stats;
   out.regions = explore_cords(mesh, palm_width_m, params, &stats);
   const std::vector<GraspRegion>& regions = out.regions;
@@ -49,12 +41,12 @@ ExploreOutcome explore_job(const ExploreJobParams& opt) {
     j["triangles"] = mesh.triangles.size();
     j["palm_width_m"] = palm_width_m;
     j["palm_width_from"] = hand_text;
-    j["seed"] = opt.seed;
-    j["sets"] = opt.sets;
+    j["seed"] = params.seed;
+    j["sets"] = params.sets;
     j["local_improvement"] = params.local_improvement;
-    j["time_limit_s"] = opt.time_limit_s;
-    j["side_cords"] = opt.side_cords;
-    j["xor_backend"] = opt.xor_backend;
+    j["time_limit_s"] = params.time_limit_s;
+    j["side_cords"] = to_string(params.side_cord_policy);
+    j["xor_backend"] = to_string(params.xor_backend);
     j["stats"] = {{"triangles_sampled", stats.triangles_sampled},
                   {"triangles_acute", stats.triangles_acute},
                   {"seed_cords", stats.seed_cords},

@@ -8,13 +8,14 @@
 #include "cordgrasp/core/atomic_file.h"
 #include "cordgrasp/core/error.h"
 #include "json_util.h"
+#include "params_json.h"
 
 namespace cordgrasp {
 
 namespace {
 
 constexpr const char* kFormat = "cordgrasp-plan";
-constexpr int kFormatVersion = 1;
+constexpr int kFormatVersion = 2;
 
 nlohmann::json pose_json(const Eigen::Isometry3d& X) {
   const Eigen::Quaterniond q(X.linear());
@@ -96,6 +97,21 @@ PlanStats stats_from_json(const nlohmann::json& j) {
   return s;
 }
 
+// The layout of plan.json "parameters": the planner, PlanParams' fields at the top level (the
+// keys of format_version 1 plans: grasps, time_limit_s, seed, finger, ...), the palm width and
+// the cord planner's CordParams (null for the generic planner).
+struct PlanParameters {
+  PlanDocument* doc;
+
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit(make_nvp("planner", &doc->planner));
+    doc->params.Serialize(a);
+    a->Visit(make_nvp("palm_width_m", &doc->palm_width_m));
+    a->Visit(make_nvp("cord", &doc->cord));
+  }
+};
+
 }  // namespace
 
 nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand) {
@@ -136,7 +152,12 @@ nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand) {
               {"name", plan.object_name},
               {"units", plan.object_units},
               {"triangles", plan.object_triangles}}}}},
-          {"parameters", plan.parameters},
+          {"parameters", [&plan] {
+             PlanDocument copy = plan;  // the visitor takes field addresses
+             JsonWriteArchive archive;
+             PlanParameters{&copy}.Serialize(&archive);
+             return archive.json();
+           }()},
           {"stats", stats_json(plan.stats)},
           {"grasps", grasps}};
 }
@@ -156,6 +177,9 @@ nlohmann::json read_plan_json(const std::string& path) {
   }
   if (!j.is_object() || j.value("format", std::string()) != kFormat)
     throw InputError("read_plan: '" + path + "': not a cordgrasp plan (format != " + kFormat + ")");
+  if (j.value("format_version", 0) == 1)
+    throw InputError("read_plan: '" + path + "': format_version 1 (untyped parameters) is no "
+                     "longer read; plan the object again");
   if (j.value("format_version", 0) != kFormatVersion)
     throw InputError("read_plan: '" + path + "': unsupported format_version " +
                      j.value("format_version", nlohmann::json(nullptr)).dump());
@@ -170,7 +194,8 @@ std::string plan_object_path(const nlohmann::json& plan) {
   return plan.at("inputs").at("object").at("path").get<std::string>();
 }
 
-PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand) {
+PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
+                            const std::string& source) {
   PlanDocument p;
   try {
     p.cordgrasp_version = j.value("cordgrasp_version", std::string());
@@ -183,11 +208,16 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand) {
     p.object_name = in_obj.value("name", std::string());
     p.object_units = in_obj.value("units", std::string("m"));
     p.object_triangles = in_obj.value("triangles", 0);
-    p.parameters = j.value("parameters", nlohmann::json::object());
-    p.planner = p.parameters.value("planner", std::string("cord"));
+    if (!j.contains("parameters")) throw InputError(source + ": parameters: missing");
+    JsonReadArchive parameters(j.at("parameters"), source, "parameters");
+    PlanParameters{&p}.Serialize(&parameters);
+    parameters.reject_unknown_keys();
+    if (p.planner != "cord" && p.planner != "generic")
+      throw InputError(source + ": parameters.planner: unknown planner '" + p.planner +
+                       "' (allowed: cord, generic)");
     p.stats = stats_from_json(j.value("stats", nlohmann::json::object()));
     if (p.hand_name != hand.name)
-      throw InputError("plan: made for hand '" + p.hand_name + "', not '" + hand.name + "'");
+      throw InputError(source + ": made for hand '" + p.hand_name + "', not '" + hand.name + "'");
     for (const auto& g : j.at("grasps")) {
       Grasp grasp;
       grasp.X_OB = pose_from_json(g.at("hand_pose"));
@@ -200,7 +230,7 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand) {
         const std::string link = c.at("link").get<std::string>();
         contact.link = find_link(hand, link);
         if (contact.link < 0)
-          throw InputError("plan: contact names link '" + link + "' that hand '" + hand.name +
+          throw InputError(source + ": contact names link '" + link + "' that hand '" + hand.name +
                            "' does not have");
         contact.p_O = vec3_from_json(c.at("point_m"));
         contact.n_O = vec3_from_json(c.at("normal"));
@@ -216,7 +246,8 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand) {
         try {
           grasp.region = region_from_json(g["region"]);
         } catch (const InputError& e) {
-          throw InputError("plan: grasp " + std::to_string(p.grasps.size()) + ": " + e.what());
+          throw InputError(source + ": grasp " + std::to_string(p.grasps.size()) + ": " +
+                           e.what());
         }
       }
       const auto t = g.value("timings_s", nlohmann::json::object());
@@ -226,7 +257,7 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand) {
       p.grasps.push_back(std::move(grasp));
     }
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(std::string("plan: malformed plan.json (") + e.what() + ")");
+    throw InputError(source + ": malformed plan.json (" + e.what() + ")");
   }
   return p;
 }

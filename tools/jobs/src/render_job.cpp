@@ -20,6 +20,7 @@
 #include "cordgrasp/render/png_io.h"
 #include "cordgrasp/render/renderer.h"
 #include "cordgrasp/jobs/hand_scene.h"
+#include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/region_json.h"
 #include "cordgrasp/jobs/render_options.h"
@@ -193,31 +194,13 @@ std::string run_render_hand(const RenderJobParams& opt, const Warn& /*warn*/) {
 // Empty, with a warning, when they cannot be rebuilt.
 std::vector<GraspRegion> replay_exploration(const PlanDocument& plan, const Mesh& mesh,
                                            const Warn& warn) {
-  if (plan.planner != "cord" || !plan.parameters.contains("cord")) return {};
+  if (plan.planner != "cord" || !plan.cord) return {};
   try {
-    const nlohmann::json& c = plan.parameters.at("cord");
-    CordParams cord;
-    cord.r2_margin_m = c.at("r2_margin_m").get<double>();
-    cord.delta_r_m = c.at("delta_r_m").get<double>();
-    cord.xi_min_m = c.at("xi_min_m").get<double>();
-    cord.xi_max_m = c.at("xi_max_m").get<double>();
-    cord.scan_angle_rad = c.at("scan_angle_rad").get<double>();
-    const std::string side = c.at("side_cords").get<std::string>();
-    cord.side_cord_policy = side == "discard"  ? SideCordPolicy::kDiscardSet
-                            : side == "shrink" ? SideCordPolicy::kShrink
-                                               : SideCordPolicy::kEmptyWhenMissed;
-    cord.sphere_points = c.at("sphere_points").get<int>();
-    cord.max_iterations = c.at("max_iterations").get<int>();
-    cord.sets = c.at("sets").get<int>();
-    cord.local_improvement = c.at("local_improvement").get<bool>();
-    cord.perturbations_per_set = c.at("perturbations_per_set").get<int>();
-    cord.seed = c.at("seed").get<std::uint64_t>();
-    cord.time_limit_s = std::min(c.at("time_limit_s").get<double>(),
-                                 plan.parameters.value("time_limit_s", cord.time_limit_s));
-    const double palm_width_m = c.at("palm_width_m").get<double>();
-    std::vector<GraspRegion> regions = explore_cords(mesh, palm_width_m, cord);
+    const CordParams& cord = *plan.cord;  // every field as planned
+    std::vector<GraspRegion> regions = explore_cords(mesh, plan.palm_width_m, cord);
     std::vector<GraspRegion> ordered;
-    for (int i : cord_region_order(regions, palm_width_m, cord)) ordered.push_back(regions[i]);
+    for (int i : cord_region_order(regions, plan.palm_width_m, cord))
+      ordered.push_back(regions[i]);
     return ordered;
   } catch (const std::exception& e) {
     if (warn)
@@ -244,7 +227,7 @@ std::string run_render_plan(const RenderJobParams& opt, const Warn& warn) {
   const HandModel hand = load_hand(plan_hand_path(json));
   const PlanDocument plan = [&] {
     try {
-      return plan_from_json(json, hand);
+      return plan_from_json(json, hand, "plan");
     } catch (const InputError& e) {
       throw InputError("render: '" + opt.plan + "': " + e.what());
     }
@@ -273,7 +256,7 @@ std::string run_render_plan(const RenderJobParams& opt, const Warn& warn) {
   const HandMeshes meshes = make_hand_meshes(hand, hand_style);
   OverlayStyle overlay;
   overlay.friction_cones = opt.cones;
-  overlay.friction_coefficient = plan.parameters.value("mu", overlay.friction_coefficient);
+  overlay.friction_coefficient = plan_contact_model(plan).mu;
   overlay.cords = !opt.no_cords;
   overlay.p1 = opt.picture.view != "approach";
   const std::string who = plan.object_name + " · " + plan.hand_name + " · " + plan.planner;

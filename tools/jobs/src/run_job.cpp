@@ -50,24 +50,24 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   fs::create_directories(opt.out_dir);
 
   const std::string object_path = resolve_object_path(opt.object);
-  const auto mesh = std::make_shared<const Mesh>(load_job_mesh(opt.plan, object_path));
+  const auto mesh = std::make_shared<const Mesh>(load_job_mesh(opt.job, object_path));
   const HandModel hand = load_hand(opt.hand);
 
   // 1. Plan.
-  progress("plan: " + opt.plan.planner + " planner, hand " + hand.name + ", object " +
+  progress("plan: " + opt.job.planner + " planner, hand " + hand.name + ", object " +
                mesh->name + " (" + std::to_string(mesh->triangles.size()) + " triangles), up to " +
-               std::to_string(opt.plan.grasps) + " grasps within " +
-               fixed(opt.plan.time_limit_s, 0) + " s");
+               std::to_string(opt.job.plan.grasps) + " grasps within " +
+               fixed(opt.job.plan.time_limit_s, 0) + " s");
   auto t = Clock::now();
   RunReport& report = out.report;
-  report.plan = plan_job(opt.plan, *mesh, object_path, hand);
+  report.plan = plan_job(opt.job, *mesh, object_path, hand);
   report.plan_wall_s = seconds_since(t);
   const PlanDocument& plan = report.plan;
   const std::string plan_path = (fs::path(opt.out_dir) / "plan.json").string();
   write_plan_file(plan_path, plan, hand);
   // Physics sees the plan as written (poses as quaternions), so `cordgrasp validate --plan
   // plan.json` later reproduces these outcomes exactly.
-  const PlanDocument written = plan_from_json(read_plan_json(plan_path), hand);
+  const PlanDocument written = plan_from_json(read_plan_json(plan_path), hand, plan_path);
   const int n = static_cast<int>(plan.grasps.size());
   progress("plan: " + std::to_string(n) + " force-closure grasp(s), " +
                std::to_string(plan.stats.attempts) + " attempts");
@@ -76,7 +76,7 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
     write_file_atomically(report_path, run_report_markdown(report));
     throw std::runtime_error(
         "run: no force-closure grasp of " + mesh->name + " with " + hand.name + " (" +
-        opt.plan.planner + " planner, " + std::to_string(plan.stats.attempts) +
+        opt.job.planner + " planner, " + std::to_string(plan.stats.attempts) +
         " attempts in " + fixed(plan.stats.total_s, 1) +
         " s); try a longer --time-limit, another --seed or --planner. Wrote " + plan_path +
         " and " + report_path);
@@ -120,7 +120,7 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
     Renderer renderer;
     const HandMeshes meshes = make_hand_meshes(hand);
     OverlayStyle overlay;
-    overlay.friction_coefficient = opt.plan.mu;
+    overlay.friction_coefficient = opt.job.plan.quality.contact.mu;
     std::vector<Image> tiles;
     std::vector<std::string> captions;
     for (int k = 0; k < n; ++k) {
@@ -170,7 +170,7 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
     }
     if (!tiles.empty()) {
       ContactSheetParams sheet;
-      sheet.title = mesh->name + " · " + hand.name + " · " + opt.plan.planner + " planner · " +
+      sheet.title = mesh->name + " · " + hand.name + " · " + opt.job.planner + " planner · " +
                     std::to_string(n) + " grasps";
       report.sheet = "grasps.png";
       write_png((fs::path(opt.out_dir) / report.sheet).string(),

@@ -37,12 +37,10 @@ std::string run_report_markdown(const RunReport& rep) {
      << plan.object_units << ")\n";
   md << "- Hand: " << plan.hand_name << " (`" << plan.hand_path << "`)\n";
   md << "- Planner: " << plan.planner << ", up to "
-     << plan.parameters.value("grasps", 0) << " grasps, time limit "
-     << num(plan.parameters.value("time_limit_s", 0.0)) << " s, seed "
-     << plan.parameters.value("seed", nlohmann::json(0)).dump() << ", μ "
-     << num(plan.parameters.value("mu", 0.0)) << ", soft-finger radius "
-     << num(plan.parameters.value("soft_finger_radius_m", 0.0)) << " m, quality "
-     << plan.parameters.value("quality", std::string("textbook")) << "\n";
+     << plan.params.grasps << " grasps, time limit " << num(plan.params.time_limit_s)
+     << " s, seed " << plan.params.seed << ", μ " << num(plan.params.quality.contact.mu)
+     << ", soft-finger radius " << num(plan.params.quality.contact.soft_finger_radius_m)
+     << " m, quality " << to_string(plan.params.quality.mode) << "\n";
   if (rep.sim)
     md << "- Physics (Bullet): tests " << to_string(rep.sim->tests) << ", time step "
        << num(rep.sim->params.time_step_s, "%.5f") << " s, object mass "

@@ -36,7 +36,7 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   // Hand: the plan's, or the one given (which must be the plan's).
   const std::string hand_path = opt.hand.empty() ? plan_hand_path(plan_json) : opt.hand;
   const HandModel hand = load_hand(hand_path);
-  const PlanDocument plan = plan_from_json(plan_json, hand);  // throws for another hand
+  const PlanDocument plan = plan_from_json(plan_json, hand, opt.plan);  // throws for another hand
 
   // Object: the plan's, or the one given (which must be the plan's geometry).
   MeshLoadOptions mesh_opt;
@@ -64,7 +64,7 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   if (opt.mu) params.contact.mu = *opt.mu;
   if (opt.mass_kg) params.mass_kg = *opt.mass_kg;
   if (opt.density_kgm3) params.density_kgm3 = *opt.density_kgm3;
-  params.object_shape = object_shape_from_string(opt.object_shape);
+  params.object_shape = parse_object_shape(opt.object_shape);
   params.decomposition_cache_dir = opt.cache_dir;
   if (opt.time_step_s) params.time_step_s = *opt.time_step_s;
   if (opt.solver_iterations) params.solver_iterations = *opt.solver_iterations;
@@ -72,7 +72,7 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   if (opt.contact_damping_Nspm) params.contact_damping_Nspm = *opt.contact_damping_Nspm;
   if (opt.squeeze_rad) params.squeeze_rad = *opt.squeeze_rad;
   if (!opt.squeeze_direction.empty())
-    params.squeeze_direction = squeeze_direction_from_string(opt.squeeze_direction);
+    params.squeeze_direction = parse_squeeze_direction(opt.squeeze_direction);
   if (opt.effort_scale) params.effort_scale = *opt.effort_scale;
   if (opt.concavity) params.decomposition.concavity = *opt.concavity;
   if (opt.hacd_triangles) params.decomposition.max_input_triangles = *opt.hacd_triangles;

@@ -1,4 +1,5 @@
 #pragma once
+#include "cordgrasp/core/serialize.h"
 
 namespace cordgrasp {
 
@@ -14,6 +15,14 @@ struct ContactModel {
   /// μ · radius · normal force about the normal (contact patch radius) [m]. Two point contacts
   /// can never be force closure (no moment about the line through them); two soft fingers can.
   double soft_finger_radius_m = 0.0;
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit(CORDGRASP_NVP(mu));
+    a->Visit(CORDGRASP_NVP(cone_edges));
+    a->Visit(CORDGRASP_NVP(soft_finger_radius_m));
+  }
 };
 
 }  // namespace cordgrasp

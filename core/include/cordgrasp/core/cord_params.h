@@ -1,5 +1,8 @@
 #pragma once
 #include <cstdint>
+#include <string>
+
+#include "cordgrasp/core/serialize.h"
 
 namespace cordgrasp {
 
@@ -36,6 +39,26 @@ enum class SideCordPolicy {
                      ///< discards the set. n stays palm-width based, so such sets keep
                      ///< their size and rank behind sets whose cords all touch the object.
 };
+
+/// "yershova_lavalle", "fibonacci".
+const char* to_string(SphereSequence sequence);
+/// Parses the names of to_string(SphereSequence). @throws std::invalid_argument otherwise.
+SphereSequence parse_sphere_sequence(const std::string& text);
+
+/// "hull_chain", "tighten".
+const char* to_string(CordConstruction construction);
+/// Parses the names of to_string(CordConstruction). @throws std::invalid_argument otherwise.
+CordConstruction parse_cord_construction(const std::string& text);
+
+/// "clipper", "convex".
+const char* to_string(XorBackend backend);
+/// Parses the names of to_string(XorBackend). @throws std::invalid_argument otherwise.
+XorBackend parse_xor_backend(const std::string& text);
+
+/// "discard", "shrink", "empty" (the CLI's --side-cords names).
+const char* to_string(SideCordPolicy policy);
+/// Parses the names of to_string(SideCordPolicy). @throws std::invalid_argument otherwise.
+SideCordPolicy parse_side_cord_policy(const std::string& text);
 
 /// Every number of the exploration stage (docs/algorithm.md §1–§6) with its default and unit.
 struct CordParams {
@@ -82,6 +105,38 @@ struct CordParams {
   std::uint64_t seed = 1;      ///< seeds the single std::mt19937_64 (shuffles, perturbations)
   double time_limit_s = 30.0;  ///< wall-clock cap of explore_cords; ≤ 0 means none [s].
                                ///< Hitting it makes the result time-dependent.
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit(CORDGRASP_NVP(r2_margin_m));
+    a->Visit(CORDGRASP_NVP(delta_r_m));
+    a->Visit(CORDGRASP_NVP(eps_len_m));
+    a->Visit(CORDGRASP_NVP(eps_area_rel));
+    a->Visit(CORDGRASP_NVP(barycentric_tol));
+    a->Visit(CORDGRASP_NVP(dedup_m));
+    a->Visit(CORDGRASP_NVP(min_grasp_gap_m));
+    a->Visit(CORDGRASP_NVP(cord_construction));
+    a->Visit(CORDGRASP_NVP(xi_min_m));
+    a->Visit(CORDGRASP_NVP(xi_max_m));
+    a->Visit(CORDGRASP_NVP(max_squeeze_angle_rad));
+    a->Visit(CORDGRASP_NVP(scan_angle_rad));
+    a->Visit(CORDGRASP_NVP(max_cords_per_side));
+    a->Visit(CORDGRASP_NVP(side_cord_policy));
+    a->Visit(CORDGRASP_NVP(sphere_sequence));
+    a->Visit(CORDGRASP_NVP(sphere_points));
+    a->Visit(CORDGRASP_NVP(max_iterations));
+    a->Visit(CORDGRASP_NVP(sets));
+    a->Visit(CORDGRASP_NVP(min_triangle_area_m2));
+    a->Visit(CORDGRASP_NVP(local_improvement));
+    a->Visit(CORDGRASP_NVP(perturbations_per_set));
+    a->Visit(CORDGRASP_NVP(perturb_max_angle_rad));
+    a->Visit(CORDGRASP_NVP(perturb_max_translation_m));
+    a->Visit(CORDGRASP_NVP(xor_backend));
+    a->Visit(CORDGRASP_NVP(clipper_scale));
+    a->Visit(CORDGRASP_NVP(seed));
+    a->Visit(CORDGRASP_NVP(time_limit_s));
+  }
 };
 
 }  // namespace cordgrasp

@@ -8,6 +8,7 @@
 #include "cordgrasp/core/hand_collider.h"
 #include "cordgrasp/core/hand_model.h"
 #include "cordgrasp/core/mesh.h"
+#include "cordgrasp/core/serialize.h"
 
 namespace cordgrasp {
 
@@ -34,6 +35,21 @@ struct FingerParams {
   bool centre_single_actor = true;
   /// Largest gap that centring closes [m] (a finger farther from the object is not opposite).
   double centre_max_gap_m = 0.05;
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit(CORDGRASP_NVP(approach_step_m));
+    a->Visit(CORDGRASP_NVP(retreat_step_m));
+    a->Visit(CORDGRASP_NVP(max_retreat_steps));
+    a->Visit(CORDGRASP_NVP(close_step));
+    a->Visit(CORDGRASP_NVP(contact_tolerance_m));
+    a->Visit(CORDGRASP_NVP(max_close_iterations));
+    a->Visit(CORDGRASP_NVP(min_contacts));
+    a->Visit(CORDGRASP_NVP(static_link_contacts));
+    a->Visit(CORDGRASP_NVP(centre_single_actor));
+    a->Visit(CORDGRASP_NVP(centre_max_gap_m));
+  }
 };
 
 /// How one finger-stage attempt ended.

@@ -18,6 +18,18 @@ struct PlanParams {
   QualityParams quality;       ///< force closure and ε (docs/algorithm.md §8)
   bool roll_retry = true;      ///< cord: retry a failed region rolled 180° about z
   int max_attempts = 1000000;  ///< generic: cap on attempts besides the time limit
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit(CORDGRASP_NVP(grasps));
+    a->Visit(CORDGRASP_NVP(time_limit_s));
+    a->Visit(CORDGRASP_NVP(seed));
+    a->Visit(CORDGRASP_NVP(finger));
+    a->Visit(CORDGRASP_NVP(quality));
+    a->Visit(CORDGRASP_NVP(roll_retry));
+    a->Visit(CORDGRASP_NVP(max_attempts));
+  }
 };
 
 /// What a plan did, for reports and benchmarks. Times are wall-clock [s].

@@ -7,6 +7,7 @@
 #include "cordgrasp/core/contact_model.h"
 #include "cordgrasp/core/grasp.h"
 #include "cordgrasp/core/mesh.h"
+#include "cordgrasp/core/serialize.h"
 
 namespace cordgrasp {
 
@@ -22,7 +23,12 @@ enum class QualityMode {
 const char* to_string(QualityMode mode);
 
 /// Parses "textbook" / "simox". @throws std::invalid_argument on anything else.
-QualityMode quality_mode_from_string(const std::string& text);
+QualityMode parse_quality_mode(const std::string& text);
+
+/// Old name of parse_quality_mode.
+inline QualityMode quality_mode_from_string(const std::string& text) {
+  return parse_quality_mode(text);
+}
 
 /// Parameters of the grasp wrench space (docs/algorithm.md §8).
 struct QualityParams {
@@ -36,6 +42,18 @@ struct QualityParams {
   double simox_fc_tolerance = 1e-4;  ///< Simox accepts max facet offset ≤ this as FC
   int simox_ows_faces = 300;         ///< faces sampled for the object wrench space
   std::uint64_t seed = 1;            ///< seeds the OWS face sampling (simox mode)
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit(CORDGRASP_NVP(contact));
+    a->Visit(CORDGRASP_NVP(min_epsilon));
+    a->Visit(CORDGRASP_NVP(mode));
+    a->Visit(CORDGRASP_NVP(simox_mu_eff));
+    a->Visit(CORDGRASP_NVP(simox_fc_tolerance));
+    a->Visit(CORDGRASP_NVP(simox_ows_faces));
+    a->Visit(CORDGRASP_NVP(seed));
+  }
 };
 
 /// 6D wrench (force; λ·torque).

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cordgrasp/core/contact_model.h"
+#include "cordgrasp/core/serialize.h"
 #include "cordgrasp/sim/convex_decomposition.h"
 
 namespace cordgrasp {
@@ -20,7 +21,12 @@ enum class ObjectShape {
 const char* to_string(ObjectShape shape);
 
 /// Parses the names of to_string(ObjectShape). @throws std::invalid_argument otherwise.
-ObjectShape object_shape_from_string(const std::string& text);
+ObjectShape parse_object_shape(const std::string& text);
+
+/// Old name of parse_object_shape.
+inline ObjectShape object_shape_from_string(const std::string& text) {
+  return parse_object_shape(text);
+}
 
 /// Which way the squeeze pushes once the fingers have reached the plan (docs/physics.md §3).
 enum class SqueezeDirection {
@@ -34,7 +40,12 @@ enum class SqueezeDirection {
 const char* to_string(SqueezeDirection direction);
 
 /// Parses the names of to_string(SqueezeDirection). @throws std::invalid_argument otherwise.
-SqueezeDirection squeeze_direction_from_string(const std::string& text);
+SqueezeDirection parse_squeeze_direction(const std::string& text);
+
+/// Old name of parse_squeeze_direction.
+inline SqueezeDirection squeeze_direction_from_string(const std::string& text) {
+  return parse_squeeze_direction(text);
+}
 
 /// Where the world frame W is put relative to the object frame O (gravity is always −z_W).
 enum class WorldFrame {
@@ -43,6 +54,12 @@ enum class WorldFrame {
   /// W = O: the object's own frame decides what is up.
   kObject,
 };
+
+/// "approach_down", "object".
+const char* to_string(WorldFrame frame);
+
+/// Parses the names of to_string(WorldFrame). @throws std::invalid_argument otherwise.
+WorldFrame parse_world_frame(const std::string& text);
 
 /// Parameters of the physics validation; docs/physics.md §5 gives each default's reason.
 struct SimParams {
@@ -164,6 +181,73 @@ struct SimParams {
   // --- Tracing -----------------------------------------------------------------------------
   /// > 0: the phase hook also gets a snapshot this often inside the phases [s]; 0: off.
   double trace_interval_s = 0.0;
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit(CORDGRASP_NVP(contact));
+    a->Visit(CORDGRASP_NVP(link_margin_m));
+    a->Visit(CORDGRASP_NVP(object_margin_m));
+    a->Visit(CORDGRASP_NVP(time_step_s));
+    a->Visit(CORDGRASP_NVP(solver_iterations));
+    a->Visit(CORDGRASP_NVP(erp));
+    a->Visit(CORDGRASP_NVP(contact_stiffness_Npm));
+    a->Visit(CORDGRASP_NVP(contact_damping_Nspm));
+    a->Visit(CORDGRASP_NVP(polyhedral_contacts));
+    a->Visit(CORDGRASP_NVP(friction_erp));
+    a->Visit(CORDGRASP_NVP(cfm));
+    a->Visit(CORDGRASP_NVP(linear_slop_m));
+    a->Visit(CORDGRASP_NVP(gear_erp));
+    a->Visit(CORDGRASP_NVP(solver_residual_threshold));
+    a->Visit(CORDGRASP_NVP(cone_friction));
+    a->Visit(CORDGRASP_NVP(articulated_warmstarting));
+    a->Visit(CORDGRASP_NVP(density_kgm3));
+    a->Visit(CORDGRASP_NVP(mass_kg));
+    a->Visit(CORDGRASP_NVP(object_shape));
+    a->Visit(CORDGRASP_NVP(convex_volume_ratio));
+    a->Visit(CORDGRASP_NVP(decomposition));
+    a->Visit(CORDGRASP_NVP(decomposition_cache_dir));
+    a->Visit(CORDGRASP_NVP(close_speed));
+    a->Visit(CORDGRASP_NVP(squeeze_rad));
+    a->Visit(CORDGRASP_NVP(squeeze_m));
+    a->Visit(CORDGRASP_NVP(default_effort_Nm));
+    a->Visit(CORDGRASP_NVP(default_effort_N));
+    a->Visit(CORDGRASP_NVP(effort_scale));
+    a->Visit(CORDGRASP_NVP(squeeze_direction));
+    a->Visit(CORDGRASP_NVP(compliant_squeeze));
+    a->Visit(CORDGRASP_NVP(servo_gain_per_s));
+    a->Visit(CORDGRASP_NVP(hold_speed));
+    a->Visit(CORDGRASP_NVP(armature_kgm2));
+    a->Visit(CORDGRASP_NVP(armature_kg));
+    a->Visit(CORDGRASP_NVP(lock_passive_joints));
+    a->Visit(CORDGRASP_NVP(hand_gravity_compensation));
+    a->Visit(CORDGRASP_NVP(base_mass_scale));
+    a->Visit(CORDGRASP_NVP(world_frame));
+    a->Visit(CORDGRASP_NVP(gravity_mps2));
+    a->Visit(CORDGRASP_NVP(settle_time_s));
+    a->Visit(CORDGRASP_NVP(squeeze_max_time_s));
+    a->Visit(CORDGRASP_NVP(squeeze_ramp_s));
+    a->Visit(CORDGRASP_NVP(squeeze_min_time_s));
+    a->Visit(CORDGRASP_NVP(stall_speed));
+    a->Visit(CORDGRASP_NVP(stall_time_s));
+    a->Visit(CORDGRASP_NVP(lift_height_m));
+    a->Visit(CORDGRASP_NVP(lift_time_s));
+    a->Visit(CORDGRASP_NVP(lift_hold_s));
+    a->Visit(CORDGRASP_NVP(shake_amplitude_m));
+    a->Visit(CORDGRASP_NVP(shake_frequency_hz));
+    a->Visit(CORDGRASP_NVP(shake_time_s));
+    a->Visit(CORDGRASP_NVP(rock_angle_rad));
+    a->Visit(CORDGRASP_NVP(rock_frequency_hz));
+    a->Visit(CORDGRASP_NVP(rock_time_s));
+    a->Visit(CORDGRASP_NVP(gravity6_time_s));
+    a->Visit(CORDGRASP_NVP(held_translation_m));
+    a->Visit(CORDGRASP_NVP(held_rotation_rad));
+    a->Visit(CORDGRASP_NVP(contact_distance_m));
+    a->Visit(CORDGRASP_NVP(unstable_speed_mps));
+    a->Visit(CORDGRASP_NVP(drop_distance_m));
+    a->Visit(CORDGRASP_NVP(settle_shift_tolerance_m));
+    a->Visit(CORDGRASP_NVP(trace_interval_s));
+  }
 };
 
 }  // namespace cordgrasp

@@ -8,23 +8,19 @@
 #include "cordgrasp/core/cord_params.h"
 #include "cordgrasp/core/explore_cords.h"
 #include "cordgrasp/core/grasp_region.h"
+#include "cordgrasp/core/mesh_io.h"
 
 namespace cordgrasp {
 
 /// Inputs and settings of explore_job().
 struct ExploreJobParams {
-  std::string object;
-  std::string units = "m";
-  std::string hand;  // empty: the shipped default hand (unless --palm-width-m)
-  double palm_width_m = 0.0;
-  int sets = 20;
-  std::uint64_t seed = 1;
-  bool no_local_improvement = false;
-  std::string side_cords = "empty";
-  std::string xor_backend = "convex";
-  double time_limit_s = 30.0;
-  int top = 20;
-  std::string json_path;
+  std::string object;                         ///< mesh file
+  LengthUnits units = LengthUnits::kMeters;   ///< units of the mesh file
+  std::string hand;          ///< palm width from this hand ("": the shipped default hand)
+  double palm_width_m = 0.0; ///< > 0: this palm width instead of a hand's [m]
+  CordParams cord;           ///< every exploration parameter
+  int top = 20;              ///< regions the command prints (0 = all)
+  std::string json_path;     ///< also write the regions and stats here ("" = no)
 };
 
 /// What explore_job() found.

@@ -14,7 +14,7 @@ namespace cordgrasp {
 struct RunParams {
   std::string hand;            ///< hand description file or shipped hand name
   std::string object;          ///< object mesh file or shipped object name
-  PlanJobParams plan;          ///< planner settings (grasps = 3 on the command line)
+  PlanJobParams job;           ///< planner settings (grasps = 3 on the command line)
   std::string tests = "lift,shake";  ///< physics tests (lift, shake, gravity6) or "none"
   PictureOptions picture;      ///< size of the pictures (view: iso)
   bool render = true;          ///< write PNGs (planned grasps, physics frames, contact sheet)
