@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <fstream>
 
 #include "cordgrasp/core/error.h"
@@ -195,6 +196,65 @@ TEST(PlanJson, RefusesFormatVersion1WithAMessage) {
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
   }
   std::filesystem::remove(path);
+}
+
+TEST(PlanJson, PosesReadBackBitForBit) {
+  const HandModel hand = load_hand("parallel_gripper");
+  PlanDocument doc = sample_plan(hand);
+  for (int k = 1; k < 20; ++k) {  // rotations whose quaternion round trip is inexact
+    Grasp g = doc.grasps[0];
+    g.X_OB = Eigen::Translation3d(0.01 * k, 0.02, -0.03) *
+             Eigen::AngleAxisd(0.31 * k, Eigen::Vector3d(k, 1.0 - k, 0.5).normalized());
+    doc.grasps.push_back(g);
+  }
+  const std::string path = temp_path("exact_pose.json");
+  write_plan_file(path, doc, hand);
+  const PlanDocument back = plan_from_json(read_plan_json(path), hand);
+  ASSERT_EQ(back.grasps.size(), doc.grasps.size());
+  for (size_t k = 0; k < doc.grasps.size(); ++k) {
+    EXPECT_TRUE(back.grasps[k].X_OB.matrix() == doc.grasps[k].X_OB.matrix()) << "grasp " << k;
+    EXPECT_TRUE(back.grasps[k].X_OG.matrix() == doc.grasps[k].X_OG.matrix()) << "grasp " << k;
+  }
+  std::filesystem::remove(path);
+}
+
+// A plan edited by hand or by another tool: each bad value is refused with its JSON path.
+void expect_refused(const std::string& name, const std::function<void(nlohmann::json&)>& edit,
+                    const std::string& expected) {
+  const HandModel hand = load_hand("parallel_gripper");
+  nlohmann::json j = plan_to_json(sample_plan(hand), hand);
+  edit(j);
+  try {
+    plan_from_json(j, hand, "edited.json");
+    ADD_FAILURE() << name << ": accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << name << ": "
+                                                                       << e.what();
+  }
+}
+
+TEST(PlanJson, RefusesNonUnitQuaternionsFarPositionsNaNAndJointsOutsideLimits) {
+  expect_refused("zero quaternion", [](nlohmann::json& j) {
+    j["grasps"][0]["hand_pose"]["quaternion_wxyz"] = {0, 0, 0, 0};
+    j["grasps"][0]["hand_pose"].erase("rotation_rowmajor");
+  }, "grasps[0].hand_pose.quaternion_wxyz: not a unit quaternion");
+  expect_refused("far hand", [](nlohmann::json& j) {
+    j["grasps"][0]["hand_pose"]["position_m"] = {1e300, 0, 0};
+  }, "grasps[0].hand_pose.position_m");
+  expect_refused("null coordinate", [](nlohmann::json& j) {
+    j["grasps"][0]["gcp_pose"]["position_m"][1] = nullptr;
+  }, "grasps[0].gcp_pose.position_m[1]: not a number");
+  expect_refused("matrix off the quaternion", [](nlohmann::json& j) {
+    j["grasps"][0]["hand_pose"]["rotation_rowmajor"][0] = 0.5;
+  }, "rotation_rowmajor: does not match");
+  const HandModel hand = load_hand("parallel_gripper");
+  std::string moving;
+  for (const Joint& joint : hand.joints)
+    if (joint.is_moving()) moving = joint.name;
+  ASSERT_FALSE(moving.empty());
+  expect_refused("joint past its limit", [&](nlohmann::json& j) {
+    j["grasps"][0]["joints"][moving] = 1e3;
+  }, "outside the joint's limits");
 }
 
 }  // namespace
