@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/explore_cords.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/mesh_properties.h"
@@ -10,7 +11,6 @@
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/plan_generic_grasps.h"
 #include "cordgrasp/core/version.h"
-#include "cordgrasp/sim/bullet_hand_collider.h"
 
 namespace cordgrasp::cli {
 namespace {
