@@ -111,7 +111,8 @@ double point_triangle_distance2(const btVector3& p, const btVector3& a, const bt
 }
 
 // The object's triangles for the queries: core's BVH (build_mesh_bvh, median split, <= 4 per
-// leaf) over the non-degenerate triangles, traversed with the oriented box of a link child:
+// leaf, corner-sum order: the planner's contacts keep their witnesses) over the non-degenerate
+// triangles, traversed with the oriented box of a link child:
 // Bullet's own BVH only offers world-AABB queries, and a rotated phalanx's world AABB takes in
 // far more triangles than the phalanx itself.
 class ObjectTriangles {
@@ -127,7 +128,7 @@ class ObjectTriangles {
       const Eigen::Vector3d& c = object.vertices[t[2]];
       if (!((b - a).cross(c - a).squaredNorm() <= 0.0)) usable.triangles.push_back(t);
     }
-    bvh_ = build_mesh_bvh(usable, kLeafTriangles);
+    bvh_ = build_mesh_bvh(usable, kLeafTriangles, MeshBvhSplit::kCornerSum);
     corners_.reserve(3 * bvh_.triangles.size());
     for (const Eigen::Vector3i& t : bvh_.triangles)
       for (int k = 0; k < 3; ++k) corners_.push_back(to_bt(bvh_.vertices[t[k]]));
