@@ -4,11 +4,11 @@
 #include <filesystem>
 #include <iostream>
 
+#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/plan_generic_grasps.h"
-#include "cordgrasp/sim/bullet_hand_collider.h"
 #include "test_paths.h"
 
 namespace cordgrasp {

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <string>
 
+#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
-#include "cordgrasp/sim/bullet_hand_collider.h"
 #include "cordgrasp/sim/validate_grasp.h"
 #include "test_paths.h"
 

@@ -5,12 +5,12 @@
 //     --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/object_meshes.h"
 #include "cordgrasp/core/plan_generic_grasps.h"
 #include "cordgrasp/core/shapes.h"
-#include "cordgrasp/sim/bullet_hand_collider.h"
 #include "cordgrasp/sim/convex_decomposition.h"
 #include "cordgrasp/sim/validate_grasp.h"
 

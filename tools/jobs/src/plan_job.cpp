@@ -10,7 +10,7 @@
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/plan_generic_grasps.h"
 #include "cordgrasp/core/version.h"
-#include "cordgrasp/sim/bullet_hand_collider.h"
+#include "cordgrasp/collision/bullet_hand_collider.h"
 
 namespace cordgrasp {
 std::string absolute_path(const std::string& path) {

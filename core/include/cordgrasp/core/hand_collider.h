@@ -17,7 +17,7 @@ struct LinkObjectProximity {
 
 /// Collision and proximity queries between the links of one hand and one rigid object, the seam
 /// between the planner (core, no Bullet) and its collision backend (sim, Bullet; see
-/// cordgrasp/sim/bullet_hand_collider.h). All poses are in the object frame O: the object
+/// cordgrasp/collision/bullet_hand_collider.h). All poses are in the object frame O: the object
 /// sits at the identity. Link indices are HandModel link indices. Queries are kinematic only.
 /// Links without collision geometry never collide. Not thread-safe: one instance per thread.
 class HandObjectCollider {

@@ -25,8 +25,18 @@ struct MeshBvh {
   std::vector<int> triangle_ids;           ///< index in Mesh::triangles of triangles[k]
 };
 
+/// How build_mesh_bvh orders triangles along the split axis.
+enum class MeshBvhSplit {
+  kCentroidThenIndex,  ///< centroid coordinate, ties by triangle index
+  /// Sum of the corner coordinates, ties as std::nth_element leaves them; centroids for the
+  /// axis choice as sum·(1/3). The order the hand–object collider has always visited triangles
+  /// in: its closest-point witnesses on flat contacts (equal-distance triangles) depend on it.
+  kCornerSum,
+};
+
 /// Builds a median-split BVH (longest centroid axis) with at most `max_leaf_triangles` per leaf.
 /// Deterministic. @throws std::invalid_argument when max_leaf_triangles < 1.
-MeshBvh build_mesh_bvh(const Mesh& mesh, int max_leaf_triangles = 4);
+MeshBvh build_mesh_bvh(const Mesh& mesh, int max_leaf_triangles = 4,
+                       MeshBvhSplit split = MeshBvhSplit::kCentroidThenIndex);
 
 }  // namespace cordgrasp
