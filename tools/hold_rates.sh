@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fraction of the cord planner's force-closure grasps that hold through lift + shake in Bullet
-# (issue 5), per object set and hand. Plans and sim.json files go to OUT_DIR; one summary line
+# per object set and hand. Plans and sim.json files go to OUT_DIR; one summary line
 # per (set, hand) at the end.
 #
 #   tools/hold_rates.sh [OUT_DIR] [GRASPS_PER_OBJECT] [HANDS...]

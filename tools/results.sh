@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Regenerates docs/results.md: the evaluation of Li et al. (T-RO 2015), Fig. 11-14 and 17 and
-# physics hold rates, reproduced with `cordgrasp bench` on ../shared/data (issue 7).
+# physics hold rates, reproduced with `cordgrasp bench` on ../shared/data.
 #
 #   tools/results.sh [--full] [OUT_DIR]
 #

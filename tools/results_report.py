@@ -227,7 +227,9 @@ def fig17(in_dir, out, objects):
         cmds.append(command_of(in_dir, name))
         import json
         with open(os.path.join(in_dir, name, "bench.json")) as f:
-            limit = json.load(f)["parameters"]["time_limit_s"]
+            p = json.load(f)["parameters"]
+            # bench.json since typed parameters: parameters.job.plan.time_limit_s
+            limit = p["job"]["plan"]["time_limit_s"] if "job" in p else p["time_limit_s"]
         out.append(
             f"| {o} | {success(c)} | {ms([num(r, 'alpha_rad') for r in ok_rows(c)], 1, DEG)} | "
             f"{ms([num(r, 'total_s') for r in c], 2)} | {limit:.2f} | {success(g)} | "

@@ -61,7 +61,7 @@ std::vector<GraspRegion> explore_cords(const Mesh& mesh, double palm_width_m,
   std::iota(perm1.begin(), perm1.end(), 0);
   perm2 = perm3 = perm1;
 
-  // Algorithm 1 (spec §5).
+  // Algorithm 1 (docs/algorithm.md §5).
   std::vector<GraspRegion> found;
   const size_t wanted = size_t(std::max(0, params.sets));
   const Clock::time_point sampling_start = Clock::now();
@@ -92,7 +92,7 @@ std::vector<GraspRegion> explore_cords(const Mesh& mesh, double palm_width_m,
   }
   st.sampling_time_s = seconds_since(sampling_start);
 
-  // Local improvement (spec §5 resolution): L rigid perturbations of each set's T0.
+  // Local improvement (docs/algorithm.md §5): L rigid perturbations of each set's T0.
   const Clock::time_point improvement_start = Clock::now();
   if (params.local_improvement && !st.hit_time_limit) {
     const size_t base = found.size();

@@ -364,8 +364,9 @@ void close_fingers(const HandModel& hand, const HandSetup& setup, HandObjectColl
     for (size_t a = 0; a < num_actors; ++a) any_open = any_open || !actor_finished(a);
     if (!any_open) {
       // Simox re-runs closeActors from the reached joint values until a pass moves nothing
-      // (§7.4.4): a joint stopped by another finger may be free once that finger has stopped.
-      // Re-test each blocked joint with one full step, without bisection (no creeping).
+      // (docs/algorithm.md §7.4): a joint stopped by another finger may be free once that finger
+      // has stopped. Re-test each blocked joint with one full step, without bisection (no
+      // creeping).
       bool reopened = false;
       for (size_t a = 0; a < num_actors; ++a)
         for (JointStep& js : steps[a])

@@ -1,5 +1,6 @@
 #pragma once
-// Private: the event search of TIGHTEN (spec §2.4), shared by tighten_cord and front_cord.
+// Private: the event search of TIGHTEN (docs/algorithm.md §2.3), shared by tighten_cord and
+// front_cord.
 #include <Eigen/Core>
 #include <vector>
 
@@ -8,7 +9,7 @@
 namespace cordgrasp::detail {
 
 /// Index of the first point swept by the ray from `a` as its target moves from ga to gb
-/// (spec §2.4), or -1. `area` = cross(ga−a, gb−a), non-zero.
+/// (docs/algorithm.md §2.3), or -1. `area` = cross(ga−a, gb−a), non-zero.
 inline int first_swept_point(const Eigen::Vector2d& a, const Eigen::Vector2d& ga,
                              const Eigen::Vector2d& gb, double area,
                              const std::vector<Eigen::Vector2d>& points, double barycentric_tol,

@@ -1,5 +1,7 @@
 #include "cordgrasp/core/grasp_quality.h"
 
+#include "cordgrasp/core/enum_names.h"
+
 #include <libqhullcpp/Qhull.h>
 #include <libqhullcpp/QhullError.h>
 
@@ -55,14 +57,13 @@ double mu_for(const QualityParams& params) {
 
 }  // namespace
 
-const char* to_string(QualityMode mode) {
-  return mode == QualityMode::kSimox ? "simox" : "textbook";
-}
+constexpr EnumName<QualityMode> kQualityModeNames[] = {{QualityMode::kTextbook, "textbook"},
+                                                        {QualityMode::kSimox, "simox"}};
 
-QualityMode quality_mode_from_string(const std::string& text) {
-  if (text == "textbook") return QualityMode::kTextbook;
-  if (text == "simox") return QualityMode::kSimox;
-  throw std::invalid_argument("quality mode '" + text + "': expected textbook or simox");
+const char* to_string(QualityMode mode) { return enum_to_string(mode, kQualityModeNames); }
+
+QualityMode parse_quality_mode(const std::string& text) {
+  return parse_enum(text, kQualityModeNames, "quality mode");
 }
 
 std::vector<Wrench> contact_wrenches(const Eigen::Vector3d& p_O, const Eigen::Vector3d& n_O,

@@ -11,7 +11,9 @@ namespace {
 struct Builder {
   const Mesh& mesh;
   int max_leaf;
+  MeshBvhSplit split;
   std::vector<Eigen::Vector3d> centroid;
+  std::vector<Eigen::Vector3d> corner_sum;  // kCornerSum only
   std::vector<int> order;
   MeshBvh& bvh;
 
@@ -50,11 +52,15 @@ struct Builder {
     int axis = 0;
     (chi - clo).maxCoeff(&axis);
     const int mid = begin + (end - begin) / 2;
-    std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
-                     [&](int a, int b) {
-                       const double ca = centroid[a][axis], cb = centroid[b][axis];
-                       return ca < cb || (ca == cb && a < b);
-                     });
+    if (split == MeshBvhSplit::kCornerSum)
+      std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
+                       [&](int a, int b) { return corner_sum[a][axis] < corner_sum[b][axis]; });
+    else
+      std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
+                       [&](int a, int b) {
+                         const double ca = centroid[a][axis], cb = centroid[b][axis];
+                         return ca < cb || (ca == cb && a < b);
+                       });
     build(begin, mid);
     const int right = build(mid, end);
     bvh.nodes[index].first = right;
@@ -65,17 +71,24 @@ struct Builder {
 
 }  // namespace
 
-MeshBvh build_mesh_bvh(const Mesh& mesh, int max_leaf_triangles) {
+MeshBvh build_mesh_bvh(const Mesh& mesh, int max_leaf_triangles, MeshBvhSplit split) {
   if (max_leaf_triangles < 1) throw std::invalid_argument("build_mesh_bvh: max_leaf_triangles < 1");
   MeshBvh bvh;
   bvh.vertices = mesh.vertices;
   const int n = int(mesh.triangles.size());
   if (n == 0) return bvh;
-  Builder b{mesh, max_leaf_triangles, {}, {}, bvh};
+  Builder b{mesh, max_leaf_triangles, split, {}, {}, {}, bvh};
   b.centroid.resize(n);
+  if (split == MeshBvhSplit::kCornerSum) b.corner_sum.resize(n);
   for (int k = 0; k < n; ++k) {
     const Eigen::Vector3i& t = mesh.triangles[k];
-    b.centroid[k] = (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0;
+    const Eigen::Vector3d sum = mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]];
+    if (split == MeshBvhSplit::kCornerSum) {
+      b.corner_sum[k] = sum;
+      b.centroid[k] = sum * (1.0 / 3.0);
+    } else {
+      b.centroid[k] = sum / 3.0;
+    }
   }
   b.order.resize(n);
   std::iota(b.order.begin(), b.order.end(), 0);

@@ -17,17 +17,21 @@
 #include <tuple>
 
 #include "cordgrasp/core/atomic_file.h"
+#include "cordgrasp/core/enum_names.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/mesh_properties.h"
 
 namespace cordgrasp {
 namespace fs = std::filesystem;
 
+constexpr EnumName<LengthUnits> kLengthUnitsNames[] = {{LengthUnits::kMeters, "m"},
+                                                        {LengthUnits::kMillimeters, "mm"},
+                                                        {LengthUnits::kAuto, "auto"}};
+
+const char* to_string(LengthUnits units) { return enum_to_string(units, kLengthUnitsNames); }
+
 LengthUnits parse_length_units(const std::string& text) {
-  if (text == "m") return LengthUnits::kMeters;
-  if (text == "mm") return LengthUnits::kMillimeters;
-  if (text == "auto") return LengthUnits::kAuto;
-  throw std::invalid_argument("units must be m, mm or auto, not '" + text + "'");
+  return parse_enum(text, kLengthUnitsNames, "units");
 }
 
 namespace {

@@ -35,7 +35,7 @@ double measure_palm_width(const HandModel& hand) {
     return X_GW * (X_WL[f.tip_link] * f.p_tip_L);
   };
 
-  // Opposition direction o (spec §7.1) in the GCP xy-plane; lateral axis l = z × o.
+  // Opposition direction o (docs/algorithm.md §7.1) in the GCP xy-plane; lateral axis l = z × o.
   Eigen::Vector3d o = Eigen::Vector3d::UnitX();
   if (thumb) {
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();

@@ -18,7 +18,8 @@ double approach_travel_m(const Mesh& mesh, const GraspRegion& region) {
   const Eigen::Vector3d z = v / fallback;
   const Eigen::Vector3d c = vertex_mean(mesh);
   const double reach = (region.p1 - c).norm() + bounding_radius(mesh, c);
-  const auto hits = segment_mesh_hits(mesh, region.p1, region.p1 + reach * z);  // spec §2.3
+  // First surface hit along the approach (docs/algorithm.md §7.2).
+  const auto hits = segment_mesh_hits(mesh, region.p1, region.p1 + reach * z);
   return hits.empty() ? fallback : hits.front().t * reach;
 }
 

@@ -19,7 +19,7 @@ Eigen::Vector3d outward_face_normal(const Mesh& mesh, int tri, const Eigen::Vect
   const double reach = 2.0 * bounding_radius(mesh, c) + (p_O - c).norm() + 1.0;
   // Start just off the surface so the ray does not count its own triangle.
   const double lift = 1e-7 * reach;
-  const auto hits = segment_mesh_hits(mesh, p_O + lift * n, p_O + reach * n);  // spec §2.3
+  const auto hits = segment_mesh_hits(mesh, p_O + lift * n, p_O + reach * n);
   return hits.size() % 2 == 1 ? Eigen::Vector3d(-n) : n;
 }
 

@@ -68,13 +68,13 @@ std::optional<GraspRegion> scan_cord_set(const CordObject& object, const Eigen::
     }
     if (!fc && why == FrontCordFailure::kNoContact &&
         params.side_cord_policy == SideCordPolicy::kEmptyWhenMissed) {
-      slot.clear();  // empty Q_i: χ counts A(Q_0) for it (spec §6 degenerate rule)
+      slot.clear();  // empty Q_i: χ counts A(Q_0) for it (docs/algorithm.md §6 degenerate rule)
       return true;
     }
     return false;
   };
   if (params.side_cord_policy == SideCordPolicy::kShrink) {
-    // §11.6 variant: increasing i; the first failing ±i shrinks n to i − 1 (n ≥ 1 required).
+    // kShrink: increasing i; the first failing ±i shrinks n to i − 1 (n ≥ 1 required).
     for (int i = 1; i <= n; ++i) {
       if (build(i, +1) && build(i, -1)) continue;
       if (i == 1) return fail(ScanFailure::kSideCord, failure);

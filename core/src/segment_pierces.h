@@ -1,5 +1,5 @@
 #pragma once
-// Private: the "guide pierces the object" predicate of TIGHTEN (spec §2.4), shared by
+// Private: the "guide pierces the object" predicate of TIGHTEN (docs/algorithm.md §2.3), shared by
 // open_segment_blocked and front_cord.
 #include <Eigen/Core>
 #include <cmath>

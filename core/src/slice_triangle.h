@@ -1,5 +1,5 @@
 #pragma once
-// Private: slicing one soup triangle with a plane (spec §2.2), shared by the slicers.
+// Private: slicing one soup triangle with a plane (docs/algorithm.md §2.1), shared by the slicers.
 #include <Eigen/Core>
 #include <cstdint>
 #include <utility>

@@ -1,5 +1,5 @@
-// The physics validation protocol (issue 5): world set-up, the base trajectory, joint servos,
-// and the phases settle, close, lift, shake and gravity6.
+// The physics validation protocol (docs/physics.md §3): world set-up, the base trajectory, joint
+// servos, and the phases settle, close, lift, shake and gravity6.
 #include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 

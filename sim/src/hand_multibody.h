@@ -1,7 +1,8 @@
 #pragma once
-// sim-internal: HandModel → btMultiBody (issue 5). Links joined by fixed joints are merged into
-// one body; every body's frame is its principal inertia frame at its centre of mass (Bullet
-// wants diagonal inertias). Collision shapes come from bullet_shapes (the planner's shapes).
+// sim-internal: HandModel → btMultiBody (docs/physics.md §2). Links joined by fixed joints are
+// merged into one body; every body's frame is its principal inertia frame at its centre of mass
+// (Bullet wants diagonal inertias). Collision shapes come from bullet_shapes (the planner's
+// shapes).
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletDynamics/Featherstone/btMultiBodyGearConstraint.h>

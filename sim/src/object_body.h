@@ -1,7 +1,7 @@
 #pragma once
-// sim-internal: the object as a dynamic btRigidBody (issue 5): a convex hull, a HACD compound
-// or a btGImpactMeshShape; mass from density × volume, inertia from the collision shape; the
-// body frame C is the principal inertia frame at the centre of mass.
+// sim-internal: the object as a dynamic btRigidBody (docs/physics.md §2): a convex hull, a HACD
+// compound or a btGImpactMeshShape; mass from density × volume, inertia from the collision shape;
+// the body frame C is the principal inertia frame at the centre of mass.
 #include <BulletCollision/Gimpact/btGImpactShape.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 #include <btBulletCollisionCommon.h>

@@ -2,20 +2,45 @@
 
 #include <stdexcept>
 
-namespace cordgrasp {
+#include "cordgrasp/core/enum_names.h"
 
-const char* to_string(Protocol protocol) {
-  switch (protocol) {
-    case Protocol::kQuick: return "quick";
-    case Protocol::kThorough: return "thorough";
-  }
-  return "?";
+namespace cordgrasp {
+namespace {
+
+constexpr EnumName<ObjectShape> kObjectShapeNames[] = {
+    {ObjectShape::kAuto, "auto"},
+    {ObjectShape::kConvexHull, "hull"},
+    {ObjectShape::kDecomposition, "decomposition"},
+    {ObjectShape::kGImpact, "gimpact"}};
+constexpr EnumName<SqueezeDirection> kSqueezeDirectionNames[] = {
+    {SqueezeDirection::kActor, "actor"}, {SqueezeDirection::kContactNormals, "contacts"}};
+constexpr EnumName<Protocol> kProtocolNames[] = {{Protocol::kQuick, "quick"},
+                                                 {Protocol::kThorough, "thorough"}};
+constexpr EnumName<WorldFrame> kWorldFrameNames[] = {{WorldFrame::kApproachDown, "approach_down"},
+                                                     {WorldFrame::kObject, "object"}};
+
+}  // namespace
+
+const char* to_string(ObjectShape shape) { return enum_to_string(shape, kObjectShapeNames); }
+ObjectShape parse_object_shape(const std::string& text) {
+  return parse_enum(text, kObjectShapeNames, "object shape");
 }
 
-Protocol protocol_from_string(const std::string& text) {
-  for (Protocol p : {Protocol::kQuick, Protocol::kThorough})
-    if (text == to_string(p)) return p;
-  throw std::invalid_argument("protocol '" + text + "' is not one of quick, thorough");
+const char* to_string(SqueezeDirection direction) {
+  return enum_to_string(direction, kSqueezeDirectionNames);
+}
+SqueezeDirection parse_squeeze_direction(const std::string& text) {
+  return parse_enum(text, kSqueezeDirectionNames, "squeeze direction");
+}
+
+const char* to_string(WorldFrame frame) { return enum_to_string(frame, kWorldFrameNames); }
+WorldFrame parse_world_frame(const std::string& text) {
+  return parse_enum(text, kWorldFrameNames, "world frame");
+}
+
+const char* to_string(Protocol protocol) { return enum_to_string(protocol, kProtocolNames); }
+Protocol parse_protocol(const std::string& text) {
+  return parse_enum(text, kProtocolNames, "protocol");
 }
 
 void apply_protocol(Protocol protocol, SimParams* params) {

@@ -6,38 +6,6 @@
 
 namespace cordgrasp {
 
-const char* to_string(ObjectShape shape) {
-  switch (shape) {
-    case ObjectShape::kAuto: return "auto";
-    case ObjectShape::kConvexHull: return "hull";
-    case ObjectShape::kDecomposition: return "decomposition";
-    case ObjectShape::kGImpact: return "gimpact";
-  }
-  return "?";
-}
-
-ObjectShape object_shape_from_string(const std::string& text) {
-  for (ObjectShape s : {ObjectShape::kAuto, ObjectShape::kConvexHull, ObjectShape::kDecomposition,
-                        ObjectShape::kGImpact})
-    if (text == to_string(s)) return s;
-  throw std::invalid_argument("object shape '" + text +
-                              "' is not one of auto, hull, decomposition, gimpact");
-}
-
-const char* to_string(SqueezeDirection direction) {
-  switch (direction) {
-    case SqueezeDirection::kActor: return "actor";
-    case SqueezeDirection::kContactNormals: return "contacts";
-  }
-  return "?";
-}
-
-SqueezeDirection squeeze_direction_from_string(const std::string& text) {
-  for (SqueezeDirection d : {SqueezeDirection::kActor, SqueezeDirection::kContactNormals})
-    if (text == to_string(d)) return d;
-  throw std::invalid_argument("squeeze direction '" + text + "' is not one of actor, contacts");
-}
-
 SimTests sim_tests_from_string(const std::string& text) {
   SimTests t{false, false, false};
   std::stringstream in(text);

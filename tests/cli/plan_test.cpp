@@ -39,7 +39,7 @@ TEST(CliPlan, CordPlanOnTheMugWritesEveryGraspField) {
   EXPECT_NE(r.output.find("wrote " + out), std::string::npos) << r.output;
   const nlohmann::json j = read_json(out);
   EXPECT_EQ(j["format"], "cordgrasp-plan");
-  EXPECT_EQ(j["format_version"], 1);
+  EXPECT_EQ(j["format_version"], 2);
   EXPECT_FALSE(j["cordgrasp_version"].get<std::string>().empty());
   EXPECT_EQ(j["inputs"]["hand"]["name"], "cordgrasp_sah");
   EXPECT_TRUE(std::filesystem::path(j["inputs"]["hand"]["path"].get<std::string>()).is_absolute());
@@ -47,9 +47,10 @@ TEST(CliPlan, CordPlanOnTheMugWritesEveryGraspField) {
       std::filesystem::path(j["inputs"]["object"]["path"].get<std::string>()).is_absolute());
   EXPECT_EQ(j["parameters"]["planner"], "cord");
   EXPECT_EQ(j["parameters"]["seed"], 3);
-  EXPECT_EQ(j["parameters"]["mu"], 0.5);
-  EXPECT_EQ(j["parameters"]["quality"], "textbook");
-  EXPECT_TRUE(j["parameters"]["cord"].contains("palm_width_m"));
+  EXPECT_EQ(j["parameters"]["quality"]["contact"]["mu"], 0.5);
+  EXPECT_EQ(j["parameters"]["quality"]["mode"], "textbook");
+  EXPECT_GT(j["parameters"]["palm_width_m"].get<double>(), 0.0);
+  EXPECT_EQ(j["parameters"]["cord"]["seed"], 3);
   ASSERT_EQ(j["grasps"].size(), 2u);
   for (const auto& g : j["grasps"]) {
     const auto& q = g["hand_pose"]["quaternion_wxyz"];

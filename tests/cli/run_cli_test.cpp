@@ -89,8 +89,8 @@ TEST(CliRun, ProgressGoesToStderrUnlessQuiet) {
   EXPECT_NE(read_text(dir.file("report.md")).find("Physics: skipped"), std::string::npos);
 }
 
-// Two point contacts are never force closure (issue 4): the parallel gripper forced to point
-// contacts cannot find a grasp, so run must fail — yet keep plan and report.
+// Two point contacts are never force closure (docs/algorithm.md §8): the parallel gripper forced
+// to point contacts cannot find a grasp, so run must fail — yet keep plan and report.
 TEST(CliRun, NoGraspExitsNonZeroWithAClearMessageAndStillWritesTheReport) {
   TempDir dir;
   const auto r = run_cordgrasp("run --hand parallel_gripper --soft-finger-radius 0 --object box "
@@ -113,8 +113,8 @@ TEST(CliRun, GripperUsesItsHandsSoftFingerRadiusInPlanAndPhysics) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json plan = read_json(dir.file("plan.json"));
   const nlohmann::json sim = read_json(dir.file("sim.json"));
-  EXPECT_EQ(plan["parameters"]["soft_finger_radius_m"], 0.005);
-  EXPECT_EQ(sim["parameters"]["soft_finger_radius_m"], 0.005);
+  EXPECT_EQ(plan["parameters"]["quality"]["contact"]["soft_finger_radius_m"], 0.005);
+  EXPECT_EQ(sim["parameters"]["contact"]["soft_finger_radius_m"], 0.005);
   EXPECT_EQ(plan["grasps"].size(), 1u);
 }
 

@@ -13,6 +13,7 @@
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/sim/sim_params.h"
+#include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/sim_json.h"
 #include "test_files.h"
 #include "test_paths.h"
@@ -26,6 +27,16 @@ using test::source_dir;
 constexpr double kBoxHalfWidth_m = 0.025;  ///< assets/objects/box.obj: 5 × 5 × 8 cm, z ≥ 0
 constexpr double kBoxCentreZ_m = 0.04;
 constexpr std::uint64_t kPlanSeed = 7;
+
+// plan.json "parameters" of a generic plan with seed kPlanSeed and μ 0.5 (every key present).
+nlohmann::json generic_plan_parameters() {
+  const HandModel hand = load_hand("parallel_gripper");
+  PlanDocument doc;
+  doc.planner = "generic";
+  doc.params.seed = kPlanSeed;
+  doc.params.quality.contact.mu = 0.5;
+  return plan_to_json(doc, hand).at("parameters");
+}
 
 nlohmann::json pose_json(const Eigen::Isometry3d& X) {
   const Eigen::Quaterniond q(X.linear());
@@ -72,14 +83,14 @@ class ValidateCli : public ::testing::Test {
         {"alpha_rad", 0.0}};
     nlohmann::json plan = {
         {"format", "cordgrasp-plan"},
-        {"format_version", 1},
+        {"format_version", 2},
         {"cordgrasp_version", "test"},
         {"inputs",
          {{"hand", {{"name", "parallel_gripper"}, {"path", resolve_hand_path("parallel_gripper")},
                     {"urdf_path", ""}}},
           {"object", {{"path", box_path()}, {"name", "box"}, {"units", "m"},
                       {"triangles", 420}}}}},
-        {"parameters", {{"planner", "generic"}, {"seed", kPlanSeed}, {"mu", 0.5}}},
+        {"parameters", generic_plan_parameters()},
         {"stats", nlohmann::json::object()},
         {"grasps", nlohmann::json::array()}};
     for (int k = 0; k < grasps; ++k) plan["grasps"].push_back(grasp);
@@ -113,7 +124,7 @@ TEST_F(ValidateCli, WritesSimJsonAndOneLinePerGraspAndATotal) {
   EXPECT_NE(r.output.find("validate: 2/2 grasps"), std::string::npos) << r.output;  // stderr
   const nlohmann::json sim = read_out();
   EXPECT_EQ(sim["format"], "cordgrasp-sim");
-  EXPECT_EQ(sim["format_version"], 1);
+  EXPECT_EQ(sim["format_version"], 2);
   EXPECT_EQ(sim["summary"]["grasps"], 2);
   EXPECT_EQ(sim["summary"]["held"], 2);
   EXPECT_EQ(sim["inputs"]["plan_seed"], kPlanSeed);
@@ -121,7 +132,7 @@ TEST_F(ValidateCli, WritesSimJsonAndOneLinePerGraspAndATotal) {
   EXPECT_EQ(sim["parameters"]["tests"], "lift,shake");
   EXPECT_EQ(sim["parameters"]["protocol"], "thorough");
   EXPECT_EQ(sim["parameters"]["lift_hold_s"], 1.0);
-  EXPECT_EQ(sim["parameters"]["mu"], 0.5);
+  EXPECT_EQ(sim["parameters"]["contact"]["mu"], 0.5);
   EXPECT_TRUE(sim["backend"].get<std::string>().find("Bullet") != std::string::npos);
   ASSERT_EQ(sim["grasps"].size(), 2u);
   const auto& g = sim["grasps"][0];
@@ -148,7 +159,7 @@ TEST_F(ValidateCli, MuOverrideOfZeroDropsEveryGrasp) {
   EXPECT_NE(r.output.find("held 0 / 1"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("validate: "), std::string::npos) << r.output;  // --quiet
   const nlohmann::json sim = read_out();
-  EXPECT_EQ(sim["parameters"]["mu"], 0.0);
+  EXPECT_EQ(sim["parameters"]["contact"]["mu"], 0.0);
   EXPECT_EQ(sim["grasps"][0]["outcome"], "dropped");
   // The failure is counted under the phase that failed, in the summary and on stdout.
   const std::string failed = sim["grasps"][0]["failed_phase"];
@@ -262,7 +273,7 @@ TEST_F(ValidateCli, TrialsRepeatEachGraspWithTheHandNudgedAndShowAPointContactPi
   // This plan pinches with point contacts (no soft-finger radius), which carry no torque about
   // the line through the pads: the pinch as planned holds, but 1 mm off the centre line the
   // box turns out of it. The trials show what the single run hides.
-  EXPECT_EQ(sim["parameters"]["soft_finger_radius_m"], 0.0);
+  EXPECT_EQ(sim["parameters"]["contact"]["soft_finger_radius_m"], 0.0);
   EXPECT_EQ(trials["outcomes"][0], "held");
   EXPECT_LT(trials["held"].get<int>(), 3) << trials.dump();
   // Same seed, same trials.

@@ -1,5 +1,5 @@
-// Exploration stage (spec §5): determinism, complete ranked regions, local improvement, caps,
-// and robustness on every shared object.
+// Exploration stage (docs/algorithm.md §5): determinism, complete ranked regions, local
+// improvement, caps, and robustness on every shared object.
 #include "cordgrasp/core/explore_cords.h"
 
 #include <gtest/gtest.h>
@@ -15,7 +15,7 @@
 namespace cordgrasp {
 namespace {
 
-constexpr double kPalmWidth_m = 0.085;  ///< SAH-like palm (spec §4)
+constexpr double kPalmWidth_m = 0.085;  ///< SAH-like palm (docs/algorithm.md §4)
 constexpr double kTol_m = 1e-12;
 
 Mesh bottle() { return make_cylinder_mesh(0.03, 0.16, 32); }
@@ -145,7 +145,7 @@ TEST(ExploreCords, RejectsBadArguments) {
 TEST(ExploreCords, ObjectNarrowerThanThePalmYieldsSetsWithEmptyOuterCordsByDefault) {
   // A 4 cm cube is narrower than an 8.5 cm palm: the outer scanned planes miss it. The spec's
   // literal rule (discard) keeps no set; the default scores missed cords as empty polygons and
-  // keeps n; the §11.6 shrinking variant keeps only the inner cords.
+  // keeps n; the kShrink variant keeps only the inner cords.
   const Mesh cube = make_box_mesh(Eigen::Vector3d(0.04, 0.04, 0.04));
   CordParams discard = untimed(), shrink = untimed(), empty = untimed();
   for (CordParams* p : {&discard, &shrink, &empty}) p->max_iterations = 1;

@@ -1,5 +1,5 @@
-// Front cords (spec §3): Case I on a box, Case II on a book-like box, eligibility (§3.4), and
-// the hull-chain construction equals TIGHTEN.
+// Front cords (docs/algorithm.md §3): Case I on a box, Case II on a book-like box, eligibility,
+// and the hull-chain construction equals TIGHTEN.
 #include "cordgrasp/core/front_cord.h"
 
 #include <gtest/gtest.h>
@@ -101,7 +101,7 @@ TEST(SeedCordEligible, RejectsAnObjectTooSmallForTheHand) {
 
 TEST(SeedCordEligible, RejectsCordsTooWideForTheHand) {
   // Not a random-sampling claim: on any large object, small Case II caps or sharp oblique
-  // corners remain eligible by §3.4. Here the seeds span the object: ξ > ξ_max.
+  // corners remain eligible. Here the seeds span the object: ξ > ξ_max.
   // Case I around a 20 cm cube: the front face from corner to corner, ξ = 10 cm.
   const CordObject cube = make_cord_object(make_box_mesh(Eigen::Vector3d(0.2, 0.2, 0.2)));
   const double z = 0.01;
@@ -121,7 +121,7 @@ TEST(SeedCordEligible, RejectsCordsTooWideForTheHand) {
   EXPECT_FALSE(seed_cord_eligible(*spine));
 }
 
-/// The default hull-chain construction gives the same front cord as TIGHTEN (§2.4) run on both
+/// The default hull-chain construction gives the same front cord as TIGHTEN run on both
 /// Case I steps, on `tries` random guide triangles; returns how many cords were compared.
 int expect_hull_chain_matches_tighten(const Mesh& mesh, int tries, std::mt19937_64& rng) {
   SCOPED_TRACE(mesh.name);

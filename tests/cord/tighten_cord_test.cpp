@@ -1,5 +1,5 @@
-// TIGHTEN (spec §2.4): cords around square, L-shaped and circular cross-sections are the
-// relevant parts of the convex hull; the sampled ray-casting oracle (§2.5) agrees within 1 µm.
+// TIGHTEN (docs/algorithm.md §2.3): cords around square, L-shaped and circular cross-sections are
+// the relevant parts of the convex hull; the sampled ray-casting oracle (§2.4) agrees within 1 µm.
 #include "cordgrasp/core/tighten_cord.h"
 
 #include <gtest/gtest.h>
@@ -17,7 +17,7 @@ namespace cordgrasp {
 namespace {
 
 constexpr double kExact_m = 1e-12;     ///< same geometry, different arithmetic
-constexpr double kOracleTol_m = 1e-6;  ///< sampled oracle vs exact TIGHTEN (issue 3)
+constexpr double kOracleTol_m = 1e-6;  ///< sampled oracle vs exact TIGHTEN
 
 using Poly2 = std::vector<Eigen::Vector2d>;
 
@@ -127,7 +127,7 @@ TEST(TightenCord, FailsWhenTheGuidePiercesTheObject) {
 }
 
 /// Compares exact TIGHTEN (2D, mapped to 3D) with the sampled 3D oracle on random Case I guide
-/// triangles through `mesh` (both guides of §3.2) and on Case II front cords.
+/// triangles through `mesh` (both guides of Case I) and on Case II front cords.
 /// Adds the number of planes compared to `compared_total`.
 void compare_with_oracle(const Mesh& mesh, int planes, bool include_case_ii, std::mt19937_64& rng,
                          int& compared_total) {

@@ -1,5 +1,5 @@
-// XOR measure χ (spec §6, Eq. (1)): Clipper area identity, the convex backend, zero for an
-// extrusion, and lower χ for perpendicular than oblique approaches to a long cylinder.
+// XOR measure χ (docs/algorithm.md §6, Eq. (1)): Clipper area identity, the convex backend, zero
+// for an extrusion, and lower χ for perpendicular than oblique approaches to a long cylinder.
 #include "cordgrasp/core/xor_measure.h"
 
 #include <gtest/gtest.h>
@@ -16,7 +16,7 @@ namespace cordgrasp {
 namespace {
 
 using Poly2 = std::vector<Eigen::Vector2d>;
-constexpr double kPalmWidth_m = 0.085;  ///< SAH-like palm (spec §4)
+constexpr double kPalmWidth_m = 0.085;  ///< SAH-like palm (docs/algorithm.md §4)
 constexpr double kPi = 3.14159265358979323846;
 
 /// Coordinates on Clipper's 0.1 µm grid, so its integer conversion is exact.

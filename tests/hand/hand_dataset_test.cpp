@@ -19,7 +19,7 @@ namespace {
 constexpr double kPosTol_m = 1e-7;
 constexpr double kRotTol = 1e-7;
 /// Closing check: 0.3 rad (or 0.3 x speed m) of actor motion, i.e. 15 finger-stage steps of
-/// 0.02 rad (spec §7.4), must bring every fingertip >= 3 mm nearer the GCP axis.
+/// 0.02 rad (docs/algorithm.md §7.4), must bring every fingertip >= 3 mm nearer the GCP axis.
 constexpr double kClosingStep = 0.3;
 constexpr double kMinClosing_m = 0.003;
 
@@ -88,8 +88,8 @@ TEST(HandDataset, SahGcpInPreshapeIsTheSimoxRightArmGcp) {
   CORDGRASP_REQUIRE_SHARED_DATA();
   const HandModel h = load_hand("schunk_sah");
   EXPECT_EQ(h.links[h.gcp.link].name, "Right Arm GCP_link");
-  // Simox SAH_RightHand.xml: "Right Arm GCP" = (100, 22, 180) mm, pitch 30 deg, from
-  // "Right Hand Init", which sits at the root ("Right Hand Start") with identity (spec §1).
+  // Simox SAH_RightHand.xml: "Right Arm GCP" = (100, 22, 180) mm, pitch 30 deg, from "Right Hand
+  // Init", which sits at the root ("Right Hand Start") with identity (docs/algorithm.md §1).
   const Eigen::Isometry3d X_WG = gcp_pose(h, link_poses(h, h.preshape));
   EXPECT_LT((X_WG.translation() - Eigen::Vector3d(0.100, 0.022, 0.180)).norm(), kPosTol_m);
   const Eigen::Matrix3d R = Eigen::AngleAxisd(M_PI / 6, Eigen::Vector3d::UnitY()).matrix();

@@ -237,6 +237,8 @@ INSTANTIATE_TEST_SUITE_P(
                     "coupling master names unknown joint 'no_such_master'"},
         BadHandCase{"inverted_limits.yaml", "joint 'elbow' has inverted limits"},
         BadHandCase{"no_moving_joint.yaml", "URDF has no moving joint"},
+        BadHandCase{"joint_cycle.yaml", "joints form a cycle through link 'a'"},
+        BadHandCase{"two_parents.yaml", "link 'c' is the child of two joints"},
         BadHandCase{"yaml_syntax_error.yaml", "YAML syntax error at line"},
         BadHandCase{"millimetres.yaml", "looks like it is in millimetres"},
         BadHandCase{"malformed_urdf.yaml", "URDF parse error"},

@@ -1,4 +1,4 @@
-// measure_palm_width / palm_width (spec §4 item 6).
+// measure_palm_width / palm_width (docs/algorithm.md §4).
 #include "cordgrasp/core/palm_width.h"
 
 #include <gtest/gtest.h>

@@ -19,7 +19,6 @@ namespace cordgrasp {
 namespace {
 
 namespace fs = std::filesystem;
-using BenchRow;
 
 std::string quoted(const std::string& path) { return "\"" + path + "\""; }
 

@@ -1,13 +1,15 @@
-// plan.json round trip (tools/cli/plan_json.h).
+// plan.json round trip (tools/jobs/include/cordgrasp/jobs/plan_json.h).
 #include "cordgrasp/jobs/plan_json.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <fstream>
 
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
+#include "cordgrasp/jobs/plan_job.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
@@ -29,7 +31,18 @@ PlanDocument sample_plan(const HandModel& hand) {
   doc.object_name = "box";
   doc.object_triangles = 12;
   doc.planner = "cord";
-  doc.parameters = {{"planner", "cord"}, {"seed", 7}, {"mu", 0.5}};
+  doc.params.seed = 7;
+  doc.params.quality.contact.mu = 0.7;
+  doc.params.quality.contact.soft_finger_radius_m = 0.004;
+  doc.palm_width_m = 0.085;
+  CordParams cord;
+  cord.seed = 7;
+  cord.xi_min_m = 0.02;       // fields the old plan.json left out: the replay needs them
+  cord.eps_len_m = 2e-9;
+  cord.xor_backend = XorBackend::kClipper;
+  cord.sphere_sequence = SphereSequence::kFibonacci;
+  cord.side_cord_policy = SideCordPolicy::kShrink;
+  doc.cord = cord;
   doc.stats.attempts = 3;
   doc.stats.force_closure = 1;
   doc.stats.first_force_closure_s = 0.25;
@@ -67,7 +80,16 @@ TEST(PlanJson, RoundTripsEveryField) {
   const PlanDocument back = plan_from_json(j, hand);
   EXPECT_EQ(back.hand_name, hand.name);
   EXPECT_EQ(back.planner, "cord");
-  EXPECT_EQ(back.parameters["seed"], 7);
+  EXPECT_EQ(back.params.seed, 7u);
+  EXPECT_EQ(plan_contact_model(back).mu, 0.7);
+  EXPECT_EQ(plan_contact_model(back).soft_finger_radius_m, 0.004);
+  EXPECT_EQ(back.palm_width_m, 0.085);
+  ASSERT_TRUE(back.cord.has_value());
+  EXPECT_EQ(back.cord->xi_min_m, 0.02);
+  EXPECT_EQ(back.cord->eps_len_m, 2e-9);
+  EXPECT_EQ(back.cord->xor_backend, XorBackend::kClipper);
+  EXPECT_EQ(back.cord->sphere_sequence, SphereSequence::kFibonacci);
+  EXPECT_EQ(back.cord->side_cord_policy, SideCordPolicy::kShrink);
   EXPECT_EQ(back.stats.attempts, 3);
   ASSERT_TRUE(back.stats.first_force_closure_s.has_value());
   ASSERT_EQ(back.grasps.size(), 1u);
@@ -111,6 +133,128 @@ TEST(PlanJson, ReadNamesTheFileWhenMissingOrNotAPlan) {
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
   }
   std::filesystem::remove(path);
+}
+
+std::string decode_error(const nlohmann::json& j, const HandModel& hand) {
+  try {
+    plan_from_json(j, hand, "/abs/plan.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(PlanJson, AMissingParameterIsAnErrorNamingFileAndKey) {
+  const HandModel hand = load_hand("parallel_gripper");
+  const nlohmann::json full = plan_to_json(sample_plan(hand), hand);
+  nlohmann::json j = full;
+  j["parameters"].erase("seed");
+  EXPECT_EQ(decode_error(j, hand), "/abs/plan.json: parameters.seed: missing");
+  j = full;
+  j["parameters"]["quality"]["contact"].erase("mu");  // no silent default μ
+  EXPECT_EQ(decode_error(j, hand), "/abs/plan.json: parameters.quality.contact.mu: missing");
+  j = full;
+  j["parameters"]["cord"].erase("xi_min_m");
+  EXPECT_EQ(decode_error(j, hand), "/abs/plan.json: parameters.cord.xi_min_m: missing");
+  j = full;
+  j.erase("parameters");
+  EXPECT_EQ(decode_error(j, hand), "/abs/plan.json: parameters: missing");
+}
+
+TEST(PlanJson, AnUnknownPlannerOrEnumNameIsAnError) {
+  const HandModel hand = load_hand("parallel_gripper");
+  nlohmann::json j = plan_to_json(sample_plan(hand), hand);
+  j["parameters"]["cord"]["side_cord_policy"] = "sometimes";
+  EXPECT_NE(decode_error(j, hand).find("allowed: discard, shrink, empty"), std::string::npos)
+      << decode_error(j, hand);
+  j = plan_to_json(sample_plan(hand), hand);
+  j["parameters"]["planner"] = "magic";
+  EXPECT_NE(decode_error(j, hand).find("allowed: cord, generic"), std::string::npos);
+}
+
+TEST(PlanJson, AGenericPlanHasNoCordParameters) {
+  const HandModel hand = load_hand("parallel_gripper");
+  PlanDocument doc = sample_plan(hand);
+  doc.planner = "generic";
+  doc.cord.reset();
+  const nlohmann::json j = plan_to_json(doc, hand);
+  EXPECT_TRUE(j.at("parameters").at("cord").is_null());
+  EXPECT_FALSE(plan_from_json(j, hand).cord.has_value());
+}
+
+TEST(PlanJson, RefusesFormatVersion1WithAMessage) {
+  const HandModel hand = load_hand("parallel_gripper");
+  nlohmann::json j = plan_to_json(sample_plan(hand), hand);
+  j["format_version"] = 1;
+  const std::string path = temp_path("v1.json");
+  std::ofstream(path) << j.dump();
+  try {
+    read_plan_json(path);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("format_version 1"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(path);
+}
+
+TEST(PlanJson, PosesReadBackBitForBit) {
+  const HandModel hand = load_hand("parallel_gripper");
+  PlanDocument doc = sample_plan(hand);
+  for (int k = 1; k < 20; ++k) {  // rotations whose quaternion round trip is inexact
+    Grasp g = doc.grasps[0];
+    g.X_OB = Eigen::Translation3d(0.01 * k, 0.02, -0.03) *
+             Eigen::AngleAxisd(0.31 * k, Eigen::Vector3d(k, 1.0 - k, 0.5).normalized());
+    doc.grasps.push_back(g);
+  }
+  const std::string path = temp_path("exact_pose.json");
+  write_plan_file(path, doc, hand);
+  const PlanDocument back = plan_from_json(read_plan_json(path), hand);
+  ASSERT_EQ(back.grasps.size(), doc.grasps.size());
+  for (size_t k = 0; k < doc.grasps.size(); ++k) {
+    EXPECT_TRUE(back.grasps[k].X_OB.matrix() == doc.grasps[k].X_OB.matrix()) << "grasp " << k;
+    EXPECT_TRUE(back.grasps[k].X_OG.matrix() == doc.grasps[k].X_OG.matrix()) << "grasp " << k;
+  }
+  std::filesystem::remove(path);
+}
+
+// A plan edited by hand or by another tool: each bad value is refused with its JSON path.
+void expect_refused(const std::string& name, const std::function<void(nlohmann::json&)>& edit,
+                    const std::string& expected) {
+  const HandModel hand = load_hand("parallel_gripper");
+  nlohmann::json j = plan_to_json(sample_plan(hand), hand);
+  edit(j);
+  try {
+    plan_from_json(j, hand, "edited.json");
+    ADD_FAILURE() << name << ": accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << name << ": "
+                                                                       << e.what();
+  }
+}
+
+TEST(PlanJson, RefusesNonUnitQuaternionsFarPositionsNaNAndJointsOutsideLimits) {
+  expect_refused("zero quaternion", [](nlohmann::json& j) {
+    j["grasps"][0]["hand_pose"]["quaternion_wxyz"] = {0, 0, 0, 0};
+    j["grasps"][0]["hand_pose"].erase("rotation_rowmajor");
+  }, "grasps[0].hand_pose.quaternion_wxyz: not a unit quaternion");
+  expect_refused("far hand", [](nlohmann::json& j) {
+    j["grasps"][0]["hand_pose"]["position_m"] = {1e300, 0, 0};
+  }, "grasps[0].hand_pose.position_m");
+  expect_refused("null coordinate", [](nlohmann::json& j) {
+    j["grasps"][0]["gcp_pose"]["position_m"][1] = nullptr;
+  }, "grasps[0].gcp_pose.position_m[1]: not a number");
+  expect_refused("matrix off the quaternion", [](nlohmann::json& j) {
+    j["grasps"][0]["hand_pose"]["rotation_rowmajor"][0] = 0.5;
+  }, "rotation_rowmajor: does not match");
+  const HandModel hand = load_hand("parallel_gripper");
+  std::string moving;
+  for (const Joint& joint : hand.joints)
+    if (joint.is_moving()) moving = joint.name;
+  ASSERT_FALSE(moving.empty());
+  expect_refused("joint past its limit", [&](nlohmann::json& j) {
+    j["grasps"][0]["joints"][moving] = 1e3;
+  }, "outside the joint's limits");
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// report.md of `cordgrasp run` (issue 7): the physics cell of the grasp table.
+// report.md of `cordgrasp run`: the physics cell of the grasp table.
 #include "cordgrasp/jobs/run_report.h"
 
 #include <gtest/gtest.h>

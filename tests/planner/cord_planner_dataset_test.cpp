@@ -1,10 +1,10 @@
 // The cord planner with the Schunk SAH on the shared KIT and YCB objects (label `dataset`).
 #include <gtest/gtest.h>
 
+#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
-#include "cordgrasp/sim/bullet_hand_collider.h"
 #include "test_paths.h"
 
 namespace cordgrasp {

@@ -4,11 +4,11 @@
 #include <filesystem>
 #include <iostream>
 
+#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/plan_generic_grasps.h"
-#include "cordgrasp/sim/bullet_hand_collider.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
@@ -79,9 +79,9 @@ TEST(CordPlanner, AlignsWithTheLongCylinderFarBetterThanRandomApproaches) {
   EXPECT_LT(alpha, 0.5 * kRandomDirectionMeanAlpha_rad);
 }
 
-// The generic baseline approaches along face normals; on a polygonal cylinder every face normal
-// is radial or axial, so its α is exactly 0 and no planner can beat it there (issue 4 asked for
-// mean α(cord) < mean α(generic) on this object: impossible against a Simox-faithful baseline;
+// The generic baseline approaches along face normals; on a polygonal cylinder every face normal is
+// radial or axial, so its α is exactly 0 and no planner can beat it there (mean α(cord) < mean
+// α(generic) on this object, as once asked for, is impossible against a Simox-faithful baseline;
 // [P]'s comparison used scanned KIT meshes, whose normals are noisy).
 TEST(GenericPlanner, HasZeroSkewnessOnAPolygonalCylinder) {
   const HandModel hand = load_hand(default_hand_name());

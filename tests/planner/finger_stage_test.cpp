@@ -1,14 +1,14 @@
-// Finger stage (spec §7) with hands built from primitives and the Bullet collider.
+// Finger stage (docs/algorithm.md §7) with hands built from primitives and the Bullet collider.
 #include "cordgrasp/core/finger_stage.h"
 
 #include <gtest/gtest.h>
 
+#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/grasp_quality.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/shapes.h"
-#include "cordgrasp/sim/bullet_hand_collider.h"
 #include "test_hands.h"
 
 namespace cordgrasp {

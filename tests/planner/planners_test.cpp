@@ -1,10 +1,10 @@
 // Cord planner on hand-made regions and the generic baseline, with primitive hands.
 #include <gtest/gtest.h>
 
+#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/plan_generic_grasps.h"
 #include "cordgrasp/core/shapes.h"
-#include "cordgrasp/sim/bullet_hand_collider.h"
 #include "test_hands.h"
 
 namespace cordgrasp {

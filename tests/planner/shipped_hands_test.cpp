@@ -1,11 +1,11 @@
 // Finger stage with the hands shipped in assets/hands.
 #include <gtest/gtest.h>
 
+#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/finger_stage.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/shapes.h"
-#include "cordgrasp/sim/bullet_hand_collider.h"
 
 namespace cordgrasp {
 namespace {

@@ -1,4 +1,4 @@
-// Grasp wrench space (spec §8): force closure and ε.
+// Grasp wrench space (docs/algorithm.md §8): force closure and ε.
 #include "cordgrasp/core/grasp_quality.h"
 
 #include <gtest/gtest.h>
@@ -279,10 +279,10 @@ TEST(GraspQuality, VerdictAndEpsilonAreThoseOfTheWrenchHullOnRandomGrasps) {
 }
 
 TEST(QualityMode, ParsesBothNamesAndRejectsOthers) {
-  EXPECT_EQ(quality_mode_from_string("textbook"), QualityMode::kTextbook);
-  EXPECT_EQ(quality_mode_from_string("simox"), QualityMode::kSimox);
+  EXPECT_EQ(parse_quality_mode("textbook"), QualityMode::kTextbook);
+  EXPECT_EQ(parse_quality_mode("simox"), QualityMode::kSimox);
   EXPECT_STREQ(to_string(QualityMode::kSimox), "simox");
-  EXPECT_THROW(quality_mode_from_string("ferrari"), std::invalid_argument);
+  EXPECT_THROW(parse_quality_mode("ferrari"), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Skewness α (spec §9).
+// Skewness α (docs/algorithm.md §9).
 #include "cordgrasp/core/skewness.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Physics validation of grasps from the cord planner (issue 5): the default hand's first
+// Physics validation of grasps from the cord planner (docs/physics.md): the default hand's first
 // force-closure grasp on the shipped cylinder holds, squeezed either way; on every shipped
 // object the simulation stays finite and stable.
 #include <gtest/gtest.h>
@@ -7,10 +7,10 @@
 #include <cmath>
 #include <string>
 
+#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
-#include "cordgrasp/sim/bullet_hand_collider.h"
 #include "cordgrasp/sim/validate_grasp.h"
 #include "test_paths.h"
 

@@ -1,4 +1,4 @@
-// Physics validation (issue 5): the parallel gripper on a box, friction, reach and motor
+// Physics validation (docs/physics.md): the parallel gripper on a box, friction, reach and motor
 // strength; determinism; object mass properties; parameter parsing.
 #include "cordgrasp/sim/validate_grasp.h"
 
@@ -28,7 +28,7 @@ constexpr double kInertiaRelTol = 1e-9;
 /// The gripper's flat pads touch a face over a patch: soft-finger contacts of this radius, as
 /// the planner models two-finger grippers (tools/hold_rates.sh). With point contacts nothing
 /// but numerical noise keeps the pinched box from spinning about the line through the pads
-/// (docs/physics.md).
+/// (docs/notes/2026-11-22-physics-measurements.md).
 constexpr double kPadPatchRadius_m = 0.005;
 
 /// Simulation parameters of `protocol` (default: the default one) with the pads' soft-finger
@@ -405,14 +405,14 @@ TEST(SimTestsFromString, ParsesSubsetsAndRejectsUnknownNames) {
 TEST(ObjectShapeFromString, RoundTripsEveryShape) {
   for (ObjectShape s : {ObjectShape::kAuto, ObjectShape::kConvexHull, ObjectShape::kDecomposition,
                         ObjectShape::kGImpact})
-    EXPECT_EQ(object_shape_from_string(to_string(s)), s);
-  EXPECT_THROW(object_shape_from_string("vhacd"), std::invalid_argument);
+    EXPECT_EQ(parse_object_shape(to_string(s)), s);
+  EXPECT_THROW(parse_object_shape("vhacd"), std::invalid_argument);
 }
 
 TEST(ProtocolFromString, RoundTripsEveryProtocol) {
   for (Protocol p : {Protocol::kQuick, Protocol::kThorough})
-    EXPECT_EQ(protocol_from_string(to_string(p)), p);
-  EXPECT_THROW(protocol_from_string("fast"), std::invalid_argument);
+    EXPECT_EQ(parse_protocol(to_string(p)), p);
+  EXPECT_THROW(parse_protocol("fast"), std::invalid_argument);
 }
 
 TEST(ApplyProtocol, QuickIsTheDefaultAndThoroughTheLongProtocol) {
@@ -461,8 +461,8 @@ TEST(ApplyProtocol, QuickIsTheDefaultAndThoroughTheLongProtocol) {
 
 TEST(SqueezeDirectionFromString, RoundTripsEveryDirection) {
   for (SqueezeDirection d : {SqueezeDirection::kActor, SqueezeDirection::kContactNormals})
-    EXPECT_EQ(squeeze_direction_from_string(to_string(d)), d);
-  EXPECT_THROW(squeeze_direction_from_string("normals"), std::invalid_argument);
+    EXPECT_EQ(parse_squeeze_direction(to_string(d)), d);
+  EXPECT_THROW(parse_squeeze_direction("normals"), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
-// Exploration stage benchmarks (issue 3): 20 sets + local improvement, one thread, per shared
-// KIT and YCB object (and the shipped objects), default hand's palm width. Targets: median ≤ 20 ms
-// (KIT), ≤ 100 ms (3000-triangle YCB). Run: build/tools/cordgrasp-microbench
+// Exploration stage benchmarks (docs/algorithm.md §5): 20 sets + local improvement, one thread,
+// per shared KIT and YCB object (and the shipped objects), default hand's palm width. Targets:
+// median ≤ 20 ms (KIT), ≤ 100 ms (3000-triangle YCB). Run: build/tools/cordgrasp-microbench
 // --benchmark_filter=Explore
 //        --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>

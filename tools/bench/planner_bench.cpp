@@ -1,4 +1,4 @@
-// Grasp planner benchmarks (issue 4 speed targets), Schunk SAH, one thread:
+// Grasp planner benchmarks (speed targets), Schunk SAH, one thread:
 //   CordFirstFC/<set>/<object>     loaded mesh → first force-closure grasp (collider, cord
 //                                  exploration, finger stage, wrench space), 2 s cap
 //   GenericFirstFC/<set>/<object>  the same with the generic baseline planner
@@ -13,13 +13,13 @@
 #include <string>
 #include <vector>
 
+#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/explore_cords.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/palm_width.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/plan_generic_grasps.h"
-#include "cordgrasp/sim/bullet_hand_collider.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Micro-benchmarks of offscreen rendering (OSMesa llvmpipe): the issue-6 target is a
+// Micro-benchmarks of offscreen rendering (OSMesa llvmpipe): the target is a
 // 1024×768 anti-aliased snapshot of the SAH hand (visual meshes, ~25k triangles) with a
 // 3000-triangle object in ≤ 0.3 s.
 // Run: build/tools/cordgrasp-microbench --benchmark_filter='Render|Png'

@@ -1,5 +1,5 @@
-// Physics validation speed (issue 5): close + lift + shake of one planned grasp, one thread.
-// Target: ≤ 0.3 s for the default SAH-like hand on a 3000-triangle object (counter
+// Physics validation speed (docs/physics.md §6): close + lift + shake of one planned grasp, one
+// thread. Target: ≤ 0.3 s for the default SAH-like hand on a 3000-triangle object (counter
 // realtime_factor: simulated seconds per CPU second). Run:
 //   build/tools/cordgrasp-microbench --benchmark_filter=Validate
 //     --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
@@ -7,12 +7,12 @@
 
 #include <exception>
 
+#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/object_meshes.h"
 #include "cordgrasp/core/plan_generic_grasps.h"
 #include "cordgrasp/core/shapes.h"
-#include "cordgrasp/sim/bullet_hand_collider.h"
 #include "cordgrasp/sim/convex_decomposition.h"
 #include "cordgrasp/sim/validate_grasp.h"
 
@@ -76,9 +76,10 @@ void validate_sah_mug(benchmark::State& state, const SimParams& params) {
 void BM_ValidateSahMug(benchmark::State& state) { validate_sah_mug(state, SimParams{}); }
 BENCHMARK(BM_ValidateSahMug)->Unit(benchmark::kMillisecond)->Iterations(3);
 
-/// Time step, solver iterations and contact model against speed (docs/physics.md): the
-/// default hand on the shipped mug at 1/arg0 s with arg1 iterations, compliant contacts
-/// (2e5 N/m, 400 N·s/m) when arg2 is 1, else the default rigid ones (filter: SimStep).
+/// Time step, solver iterations and contact model against speed
+/// (docs/notes/2026-11-22-physics-measurements.md): the default hand on the shipped mug at
+/// 1/arg0 s with arg1 iterations, compliant contacts (2e5 N/m, 400 N·s/m) when arg2 is 1, else
+/// the default rigid ones (filter: SimStep).
 void BM_SimStepSahMug(benchmark::State& state) {
   SimParams params;
   params.time_step_s = 1.0 / static_cast<double>(state.range(0));
@@ -98,9 +99,9 @@ BENCHMARK(BM_SimStepSahMug)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(2);
 
-/// Object hulls and solver settings against speed (docs/physics.md): the default hand on the
-/// shipped mug with part hulls of at most arg0 vertices, arg1 solver iterations and
-/// articulated warmstarting when arg2 is 1 (filter: SolverSahMug).
+/// Object hulls and solver settings against speed (docs/notes/2026-11-22-physics-measurements.md):
+/// the default hand on the shipped mug with part hulls of at most arg0 vertices, arg1 solver
+/// iterations and articulated warmstarting when arg2 is 1 (filter: SolverSahMug).
 void BM_SolverSahMug(benchmark::State& state) {
   SimParams params;
   params.decomposition.max_hull_vertices = static_cast<int>(state.range(0));

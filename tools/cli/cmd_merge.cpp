@@ -1,5 +1,5 @@
 // `cordgrasp merge`: joins the outputs of `cordgrasp bench --shard k/N` runs into one
-// results.csv (attempt order) and summary.md (issue 7). See docs/bench.md.
+// results.csv (attempt order) and summary.md. See docs/bench.md.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>

@@ -1,243 +1,60 @@
-// `cordgrasp run`: the main job — plan → validate (Bullet) → render, with report.md (issue 7).
+// `cordgrasp run`: the main job — plan → validate (Bullet) → render, with report.md.
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <memory>
-#include <stdexcept>
 
 #include "commands.h"
-#include "options.h"
-#include "cordgrasp/core/assets.h"
-#include "cordgrasp/core/atomic_file.h"
-#include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
-#include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/object_meshes.h"
-#include "cordgrasp/render/contact_sheet.h"
-#include "cordgrasp/render/png_io.h"
-#include "cordgrasp/render/renderer.h"
-#include "cordgrasp/jobs/hand_scene.h"
-#include "cordgrasp/jobs/plan_job.h"
-#include "cordgrasp/jobs/plan_json.h"
-#include "cordgrasp/jobs/render_options.h"
-#include "cordgrasp/jobs/run_report.h"
-#include "cordgrasp/jobs/sim_json.h"
-#include "cordgrasp/jobs/text_format.h"
+#include "cordgrasp/jobs/run_job.h"
+#include "options.h"
 
 namespace cordgrasp::cli {
-namespace {
-
-namespace fs = std::filesystem;
-
-struct RunOptions {
-  std::string hand = default_hand_name();
-  std::string object = default_object_name();
-  PlanJobParams job;
-  std::string tests = "lift,shake";
-  std::string size = "800x600";
-  bool no_render = false;
-  bool quiet = false;
-  std::string out_dir;
-};
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-/// Progress lines on stderr ("run [2.4 s] physics: grasp 2/3 held"), silent with --quiet.
-class Progress {
- public:
-  explicit Progress(bool quiet) : quiet_(quiet), start_(Clock::now()) {}
-  void say(const std::string& text) const {
-    if (!quiet_) std::fprintf(stderr, "run [%.1f s] %s\n", seconds_since(start_), text.c_str());
-  }
-
- private:
-  bool quiet_;
-  Clock::time_point start_;
-};
-
-
-/// Phases whose end states the physics picture shows.
-bool pictured_phase(const std::string& phase) {
-  return phase == "close" || phase == "lift" || phase == "shake";
-}
-
-void run(const RunOptions& opt) {
-  const Progress progress(opt.quiet);
-  const bool physics = opt.tests != "none";
-  const SimTests tests = physics ? sim_tests_from_string(opt.tests) : SimTests{};
-  // Check every input before the long stages: a bad size fails now, not after planning.
-  PictureOptions picture;
-  picture.size = opt.size;
-  picture.view = "iso";
-  parse_image_size(picture.size);
-  if (fs::exists(opt.out_dir) && !fs::is_directory(opt.out_dir))
-    throw InputError("run: --out-dir '" + opt.out_dir + "' exists and is not a directory");
-  fs::create_directories(opt.out_dir);
-
-  const std::string object_path = resolve_object_path(opt.object);
-  const auto mesh = std::make_shared<const Mesh>(load_job_mesh(opt.job, object_path));
-  const HandModel hand = load_hand(opt.hand);
-
-  // 1. Plan.
-  progress.say("plan: " + opt.job.planner + " planner, hand " + hand.name + ", object " +
-               mesh->name + " (" + std::to_string(mesh->triangles.size()) + " triangles), up to " +
-               std::to_string(opt.job.grasps) + " grasps within " +
-               fixed(opt.job.time_limit_s, 0) + " s");
-  auto t = Clock::now();
-  RunReport report;
-  report.plan = plan_job(opt.job, *mesh, object_path, hand);
-  report.plan_wall_s = seconds_since(t);
-  const PlanDocument& plan = report.plan;
-  const std::string plan_path = (fs::path(opt.out_dir) / "plan.json").string();
-  write_plan_file(plan_path, plan, hand);
-  // Physics sees the plan as written (poses as quaternions), so `cordgrasp validate --plan
-  // plan.json` later reproduces these outcomes exactly.
-  const PlanDocument written = plan_from_json(read_plan_json(plan_path), hand);
-  const int n = static_cast<int>(plan.grasps.size());
-  progress.say("plan: " + std::to_string(n) + " force-closure grasp(s), " +
-               std::to_string(plan.stats.attempts) + " attempts");
-  const std::string report_path = (fs::path(opt.out_dir) / "report.md").string();
-  if (n == 0) {
-    write_file_atomically(report_path, run_report_markdown(report));
-    throw std::runtime_error(
-        "run: no force-closure grasp of " + mesh->name + " with " + hand.name + " (" +
-        opt.job.planner + " planner, " + std::to_string(plan.stats.attempts) +
-        " attempts in " + fixed(plan.stats.total_s, 1) +
-        " s); try a longer --time-limit, another --seed or --planner. Wrote " + plan_path +
-        " and " + report_path);
-  }
-
-  // 2. Physics, keeping the world at the ends of close, lift and shake for the pictures.
-  SimDocument sim;
-  std::vector<std::vector<SnapshotFrame>> frames(static_cast<size_t>(n));
-  if (physics) {
-    SimParams params;
-    params.contact = plan_contact_model(written);  // one friction model for planner and physics
-    t = Clock::now();
-    const auto hooks = [&](int k) -> PhaseHook {
-      if (opt.no_render) return {};
-      return [&frames, k](const PhaseSnapshot& s) {
-        if (!s.phase_end || !pictured_phase(s.phase)) return;
-        SnapshotFrame f;
-        f.X_WL = s.X_WL;
-        f.X_WO = s.X_WO;
-        f.name = s.phase;
-        frames[static_cast<size_t>(k)].push_back(std::move(f));
-      };
-    };
-    sim = validate_plan(
-        written, hand, *mesh, params, tests, -1,
-        [&](int done, int total, const SimResult& r) {
-          progress.say("physics: grasp " + std::to_string(done) + "/" + std::to_string(total) +
-                       " " + sim_result_line(r));
-        },
-        hooks);
-    sim.plan_path = fs::absolute(plan_path).lexically_normal().string();
-    report.sim_wall_s = seconds_since(t);
-    write_sim_file((fs::path(opt.out_dir) / "sim.json").string(), sim, hand);
-    report.sim = &sim;
-  }
-
-  // 3. Pictures: each planned grasp (cords, contacts), its physics frames, a contact sheet.
-  if (!opt.no_render) {
-    t = Clock::now();
-    Renderer renderer;
-    const HandMeshes meshes = make_hand_meshes(hand);
-    OverlayStyle overlay;
-    overlay.friction_coefficient = opt.job.mu;
-    std::vector<Image> tiles;
-    std::vector<std::string> captions;
-    for (int k = 0; k < n; ++k) {
-      const Grasp& g = plan.grasps[static_cast<size_t>(k)];
-      GraspPictures pics;
-      Scene scene = grasp_scene(hand, meshes, mesh, g, g.region ? &*g.region : nullptr, overlay);
-      const std::string quality =
-          "α = " + fixed(g.alpha_rad, 3) + " rad · ε = " + fixed(g.epsilon, 4);
-      scene.caption = mesh->name + " · " + hand.name + " · grasp " + std::to_string(k) + " · " +
-                      quality;
-      const RenderParams params = render_params(picture, scene, g.X_OG.linear().col(2));
-      Image image = renderer.render(scene, params);
-      pics.planned = "grasp_" + std::to_string(k) + ".png";
-      write_png((fs::path(opt.out_dir) / pics.planned).string(), image);
-      if (n > 1) {
-        scene.caption.clear();
-        tiles.push_back(renderer.render(scene, params));
-        captions.push_back("#" + std::to_string(k) + " · " + quality);
-      }
-      auto& f = frames[static_cast<size_t>(k)];
-      if (!f.empty()) {
-        const SimResult& r = sim.results[static_cast<size_t>(k)];
-        for (SnapshotFrame& frame : f) {
-          const PhaseResult* p = r.phase(frame.name);
-          frame.caption = "after " + frame.name + (p ? std::string(" · ") + to_string(p->outcome)
-                                                     : std::string());
-        }
-        Scene empty;
-        RenderParams snap = render_params(picture, empty);
-        snap.width_px = params.width_px / 2;
-        snap.height_px = params.height_px / 2;
-        std::vector<std::string> snap_captions;
-        for (const SnapshotFrame& frame : f) snap_captions.push_back(frame.caption);
-        std::vector<SnapshotFrame> plain = f;
-        for (SnapshotFrame& frame : plain) frame.caption.clear();
-        ContactSheetParams strip;
-        strip.columns = static_cast<int>(plain.size());
-        strip.title = mesh->name + " · " + hand.name + " · grasp " + std::to_string(k) +
-                      " in Bullet: " + to_string(r.outcome);
-        const Image sheet = compose_contact_sheet(
-            render_snapshots(renderer, hand, mesh, plain, snap), snap_captions, strip);
-        pics.snapshots.push_back("grasp_" + std::to_string(k) + "_physics.png");
-        write_png((fs::path(opt.out_dir) / pics.snapshots.back()).string(), sheet);
-      }
-      report.pictures.push_back(pics);
-      progress.say("render: grasp " + std::to_string(k + 1) + "/" + std::to_string(n));
-    }
-    if (!tiles.empty()) {
-      ContactSheetParams sheet;
-      sheet.title = mesh->name + " · " + hand.name + " · " + opt.job.planner + " planner · " +
-                    std::to_string(n) + " grasps";
-      report.sheet = "grasps.png";
-      write_png((fs::path(opt.out_dir) / report.sheet).string(),
-                compose_contact_sheet(tiles, captions, sheet));
-    }
-    report.render_wall_s = seconds_since(t);
-  }
-
-  write_file_atomically(report_path, run_report_markdown(report));
-  int held = 0;
-  for (const SimResult& r : sim.results) held += r.held();
-  std::cout << "run: " << n << " grasp(s) of " << mesh->name << " with " << hand.name;
-  if (physics)
-    std::cout << ", " << held << " held through " << to_string(tests);
-  std::cout << "\n  report " << report_path << "\n";
-}
-
-}  // namespace
-
 
 void add_run_command(CLI::App& app) {
-  auto opt = std::make_shared<RunOptions>();
-  opt->job.grasps = 3;
+  struct Options {
+    RunParams run;
+    bool no_render = false;
+    bool quiet = false;
+  };
+  auto opt = std::make_shared<Options>();
+  opt->run.hand = default_hand_name();
+  opt->run.object = default_object_name();
+  opt->run.job.plan.grasps = 3;
+  opt->run.picture.size = "800x600";
   CLI::App* cmd = app.add_subcommand(
       "run", "The main job: plan grasps, check them in Bullet (lift, shake), render them, and "
              "write plan.json, sim.json, PNGs and report.md");
-  cmd->add_option("--hand", opt->hand, "Hand description file or shipped hand name")
+  cmd->add_option("--hand", opt->run.hand, "Hand description file or shipped hand name")
       ->capture_default_str();
-  cmd->add_option("--object,-o", opt->object, "Object mesh file or shipped object name")
+  cmd->add_option("--object,-o", opt->run.object, "Object mesh file or shipped object name")
       ->capture_default_str();
-  add_plan_job_options(cmd, opt->job);
-  cmd->add_option("--tests", opt->tests, "Physics tests: any of lift,shake,gravity6, or none")
+  add_plan_job_options(cmd, opt->run.job);
+  cmd->add_option("--tests", opt->run.tests,
+                  "Physics tests: any of lift,shake,gravity6, or none")
       ->capture_default_str();
-  cmd->add_option("--size", opt->size, "Picture size WxH [px]")->capture_default_str();
+  cmd->add_option("--size", opt->run.picture.size, "Picture size WxH [px]")
+      ->capture_default_str();
   cmd->add_flag("--no-render", opt->no_render, "No pictures");
   cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
-  cmd->add_option("--out-dir", opt->out_dir, "Output folder (created if missing)")->required();
-  cmd->callback([opt]() { run(*opt); });
+  cmd->add_option("--out-dir", opt->run.out_dir, "Output folder (created if missing)")
+      ->required();
+  cmd->callback([opt]() {
+    opt->run.render = !opt->no_render;
+    const auto start = std::chrono::steady_clock::now();
+    const RunOutcome out = run_job(opt->run, [&](const std::string& line) {
+      if (opt->quiet) return;
+      const double s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::fprintf(stderr, "run [%.1f s] %s\n", s, line.c_str());
+    });
+    std::cout << "run: " << out.report.plan.grasps.size() << " grasp(s) of "
+              << out.report.plan.object_name << " with " << out.report.plan.hand_name;
+    if (!out.sim_path.empty())
+      std::cout << ", " << out.held << " held through " << to_string(out.sim.tests);
+    std::cout << "\n  report " << out.report_path << "\n";
+  });
 }
 
 }  // namespace cordgrasp::cli

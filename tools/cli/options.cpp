@@ -6,37 +6,32 @@ void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
   cmd->add_option("--planner", p.planner, "cord (Li et al. 2015) or generic (Simox baseline)")
       ->check(CLI::IsMember({"cord", "generic"}))
       ->capture_default_str();
-  cmd->add_option("--grasps,-n", p.grasps, "Stop after this many force-closure grasps")
+  cmd->add_option("--grasps,-n", p.plan.grasps, "Stop after this many force-closure grasps")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  cmd->add_option("--time-limit", p.time_limit_s, "Wall-clock limit of the plan [s]")
+  cmd->add_option("--time-limit", p.plan.time_limit_s, "Wall-clock limit of the plan [s]")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  cmd->add_option("--seed", p.seed, "Seed of every random choice")->capture_default_str();
-  cmd->add_option("--mu", p.mu, "Friction coefficient of the wrench space and the physics")
+  cmd->add_option("--seed", p.plan.seed, "Seed of every random choice")->capture_default_str();
+  cmd->add_option("--mu", p.plan.quality.contact.mu,
+                  "Friction coefficient of the wrench space and the physics")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_option("--soft-finger-radius", p.soft_finger_radius_m,
                   "Contact patch radius for torsional friction [m]; 0 = point contacts "
                   "(default: the hand's soft_finger_radius_m, 5 mm for the grippers)")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--side-cords", p.side_cords,
+  add_enum_option(cmd, "--side-cords", &p.cord.side_cord_policy,
                   "Cord: a scanned cord that fails: empty (missed object scores as empty), "
-                  "discard (spec 4.5) or shrink (spec 11.6)")
-      ->check(CLI::IsMember({"empty", "discard", "shrink"}))
-      ->capture_default_str();
-  cmd->add_option("--quality", p.quality,
-                  "textbook (real mu, eps = origin to hull) or simox (compat quirks, spec 8)")
-      ->check(CLI::IsMember({"textbook", "simox"}))
-      ->capture_default_str();
-  cmd->add_option("--units", p.units, "Units of the object file: m, mm or auto")
-      ->check(CLI::IsMember({"m", "mm", "auto"}))
-      ->capture_default_str();
-  cmd->add_option("--sets", p.cord_sets, "Cord: valid sets to sample before local improvement")
+                  "discard (the paper) or shrink (docs/algorithm.md §4)");
+  add_enum_option(cmd, "--quality", &p.plan.quality.mode,
+                  "textbook (real mu, eps = origin to hull) or simox (compat quirks, docs/algorithm.md §8)");
+  add_enum_option(cmd, "--units", &p.units, "Units of the object file: m, mm or auto");
+  cmd->add_option("--sets", p.cord.sets, "Cord: valid sets to sample before local improvement")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->add_flag_callback(
-      "--no-local-improvement", [&p]() { p.cord_local_improvement = false; },
+      "--no-local-improvement", [&p]() { p.cord.local_improvement = false; },
       "Cord: skip the local improvement of the sampled sets");
 }
 

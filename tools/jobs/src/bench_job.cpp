@@ -18,6 +18,7 @@
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/jobs/sim_json.h"
 #include "cordgrasp/jobs/text_format.h"
+#include "params_json.h"
 
 namespace cordgrasp {
 namespace {
@@ -436,7 +437,7 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
     if (!hand) throw InputError(error);
     PlanJobParams job = params.job;
     job.planner = attempt.planner;
-    job.seed = attempt.seed;
+    job.plan.seed = attempt.seed;
     const PlanDocument plan = plan_job(job, *mesh, attempt.object_path, *hand);
     const PlanStats& s = plan.stats;
     row.first_fc_s = s.first_force_closure_s;
@@ -511,22 +512,16 @@ std::vector<BenchResult> run_bench_attempts(const std::vector<BenchAttempt>& att
 }
 
 nlohmann::json bench_params_to_json(const BenchParams& p) {
-  const PlanJobParams& j = p.job;
+  PlanJobParams j = p.job;
+  j.plan.seed = p.seed;  // per attempt: seed + repeat
+  nlohmann::json job = params_to_json(j);
+  job.erase("planner");  // per attempt: "planners"
   return {{"hands", p.hands},
           {"objects", p.objects},
           {"planners", p.planners},
           {"repeats", p.repeats},
           {"seed", p.seed},
-          {"grasps", j.grasps},
-          {"time_limit_s", j.time_limit_s},
-          {"mu", j.mu},
-          {"soft_finger_radius_m", j.soft_finger_radius_m ? nlohmann::json(*j.soft_finger_radius_m)
-                                                          : nlohmann::json("hand default")},
-          {"side_cords", j.side_cords},
-          {"quality", j.quality},
-          {"units", j.units},
-          {"sets", j.cord_sets},
-          {"local_improvement", j.cord_local_improvement},
+          {"job", job},
           {"tests", p.tests}};
 }
 
@@ -554,8 +549,8 @@ std::string bench_summary_markdown(const std::vector<BenchRow>& rows,
   if (!info.shard.empty()) out << " (shard " << info.shard << ")";
   out << "\n- physics tests on each attempt's first grasp: "
       << (info.tests.empty() ? "none" : info.tests) << "\n";
-  out << "- times are wall-clock seconds; α (skewness, spec §9) and ε of the first force-closure "
-         "grasp; first FC, α and ε over the attempts that found a grasp; sim held = first "
+  out << "- times are wall-clock seconds; α (skewness, docs/algorithm.md §9) and ε of the "
+         "first force-closure grasp; first FC, α and ε over the attempts that found a grasp; sim held = first "
          "grasps that held through every test / first grasps simulated.\n\n";
 
   // Groups in attempt order.

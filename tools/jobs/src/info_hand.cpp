@@ -175,7 +175,7 @@ void print_hand_info(const nlohmann::json& j) {
       << (j["palm_width_from_description"].get<bool>()
               ? "from the description; measured " +
                     std::to_string(j["palm_width_measured_m"].get<double>()) + " m)\n"
-              : std::string("measured in preshape, spec 4.6)\n"))
+              : std::string("measured in preshape, docs/algorithm.md §4)\n"))
       << "GCP        link '" << j["gcp"]["link"].get<std::string>() << "', in preshape at "
       << vec_text(j["gcp"]["position_in_preshape_m"]) << " m, approach +z "
       << vec_text(j["gcp"]["z_axis"]) << '\n';

@@ -1,5 +1,7 @@
 #include "cordgrasp/jobs/plan_json.h"
 
+#include <cmath>
+
 #include "cordgrasp/jobs/region_json.h"
 
 #include <fstream>
@@ -8,27 +10,81 @@
 #include "cordgrasp/core/atomic_file.h"
 #include "cordgrasp/core/error.h"
 #include "json_util.h"
+#include "params_json.h"
 
 namespace cordgrasp {
 
 namespace {
 
 constexpr const char* kFormat = "cordgrasp-plan";
-constexpr int kFormatVersion = 1;
+constexpr int kFormatVersion = 2;
 
+/// Largest |coordinate| of a position in a plan [m]: anything farther is not a grasp.
+constexpr double kMaxPlanCoordinate_m = 1e3;
+/// How far a stored quaternion's norm may be from 1 before the plan is refused.
+constexpr double kUnitQuaternionTol = 1e-6;
+/// How far a joint value may lie outside its limits (rounding of the writer) [rad or m].
+constexpr double kJointLimitTol = 1e-9;
+
+// The rotation is stored twice: as a quaternion for people and other tools, and as its nine
+// matrix entries (row-major), which restore the pose bit for bit, so that a plan re-read from
+// plan.json simulates exactly as the one in memory.
 nlohmann::json pose_json(const Eigen::Isometry3d& X) {
   const Eigen::Quaterniond q(X.linear());
+  nlohmann::json rows = nlohmann::json::array();
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) rows.push_back(X.linear()(r, c));
   return {{"position_m", to_json(Eigen::Vector3d(X.translation()))},
-          {"quaternion_wxyz", {q.w(), q.x(), q.y(), q.z()}}};
+          {"quaternion_wxyz", {q.w(), q.x(), q.y(), q.z()}},
+          {"rotation_rowmajor", rows}};
 }
 
-Eigen::Isometry3d pose_from_json(const nlohmann::json& j) {
+double finite_number(const nlohmann::json& j, const std::string& where) {
+  if (!j.is_number()) throw InputError(where + ": not a number");
+  const double v = j.get<double>();
+  if (!std::isfinite(v)) throw InputError(where + ": not finite");
+  return v;
+}
+
+Eigen::Vector3d point_from_json(const nlohmann::json& j, const std::string& where) {
+  if (!j.is_array() || j.size() != 3) throw InputError(where + ": expected [x, y, z]");
+  Eigen::Vector3d p;
+  for (int i = 0; i < 3; ++i) {
+    p[i] = finite_number(j[static_cast<size_t>(i)], where + "[" + std::to_string(i) + "]");
+    if (std::abs(p[i]) > kMaxPlanCoordinate_m)
+      throw InputError(where + ": " + std::to_string(p[i]) + " m is farther than " +
+                       std::to_string(static_cast<int>(kMaxPlanCoordinate_m)) + " m");
+  }
+  return p;
+}
+
+Eigen::Isometry3d pose_from_json(const nlohmann::json& j, const std::string& where) {
+  if (!j.is_object()) throw InputError(where + ": expected {position_m, quaternion_wxyz}");
+  if (!j.contains("quaternion_wxyz")) throw InputError(where + ".quaternion_wxyz: missing");
+  if (!j.contains("position_m")) throw InputError(where + ".position_m: missing");
   const auto& q = j.at("quaternion_wxyz");
-  Eigen::Quaterniond quat(q.at(0).get<double>(), q.at(1).get<double>(), q.at(2).get<double>(),
-                          q.at(3).get<double>());
+  const std::string qw = where + ".quaternion_wxyz";
+  if (!q.is_array() || q.size() != 4) throw InputError(qw + ": expected [w, x, y, z]");
+  Eigen::Vector4d wxyz;
+  for (int i = 0; i < 4; ++i)
+    wxyz[i] = finite_number(q[static_cast<size_t>(i)], qw + "[" + std::to_string(i) + "]");
+  if (std::abs(wxyz.norm() - 1.0) > kUnitQuaternionTol)
+    throw InputError(qw + ": not a unit quaternion (norm " + std::to_string(wxyz.norm()) + ")");
+  const Eigen::Quaterniond quat(wxyz[0], wxyz[1], wxyz[2], wxyz[3]);
   Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
   X.linear() = quat.normalized().toRotationMatrix();
-  X.translation() = vec3_from_json(j.at("position_m"));
+  if (j.contains("rotation_rowmajor")) {
+    const auto& m = j.at("rotation_rowmajor");
+    const std::string mw = where + ".rotation_rowmajor";
+    if (!m.is_array() || m.size() != 9) throw InputError(mw + ": expected 9 numbers");
+    Eigen::Matrix3d R;
+    for (int k = 0; k < 9; ++k)
+      R(k / 3, k % 3) = finite_number(m[static_cast<size_t>(k)], mw);
+    if ((R - X.linear()).cwiseAbs().maxCoeff() > 1e-6)
+      throw InputError(mw + ": does not match quaternion_wxyz");
+    X.linear() = R;  // exact: the matrix the planner had
+  }
+  X.translation() = point_from_json(j.at("position_m"), where + ".position_m");
   return X;
 }
 
@@ -48,7 +104,13 @@ Eigen::VectorXd joints_from_json(const HandModel& hand, const nlohmann::json& j,
     if (index < 0)
       throw InputError("plan: " + what + " names joint '" + name + "' that hand '" + hand.name +
                        "' does not have");
-    q[index] = value.get<double>();
+    const double v = finite_number(value, "plan: " + what + "." + name);
+    const Joint& joint = hand.joints[static_cast<size_t>(index)];
+    if (v < joint.lower - kJointLimitTol || v > joint.upper + kJointLimitTol)
+      throw InputError("plan: " + what + "." + name + ": " + std::to_string(v) +
+                       " is outside the joint's limits [" + std::to_string(joint.lower) + ", " +
+                       std::to_string(joint.upper) + "]");
+    q[index] = v;
   }
   return q;
 }
@@ -96,6 +158,21 @@ PlanStats stats_from_json(const nlohmann::json& j) {
   return s;
 }
 
+// The layout of plan.json "parameters": the planner, PlanParams' fields at the top level (the
+// keys of format_version 1 plans: grasps, time_limit_s, seed, finger, ...), the palm width and
+// the cord planner's CordParams (null for the generic planner).
+struct PlanParameters {
+  PlanDocument* doc;
+
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit(make_nvp("planner", &doc->planner));
+    doc->params.Serialize(a);
+    a->Visit(make_nvp("palm_width_m", &doc->palm_width_m));
+    a->Visit(make_nvp("cord", &doc->cord));
+  }
+};
+
 }  // namespace
 
 nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand) {
@@ -136,7 +213,12 @@ nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand) {
               {"name", plan.object_name},
               {"units", plan.object_units},
               {"triangles", plan.object_triangles}}}}},
-          {"parameters", plan.parameters},
+          {"parameters", [&plan] {
+             PlanDocument copy = plan;  // the visitor takes field addresses
+             JsonWriteArchive archive;
+             PlanParameters{&copy}.Serialize(&archive);
+             return archive.json();
+           }()},
           {"stats", stats_json(plan.stats)},
           {"grasps", grasps}};
 }
@@ -156,6 +238,9 @@ nlohmann::json read_plan_json(const std::string& path) {
   }
   if (!j.is_object() || j.value("format", std::string()) != kFormat)
     throw InputError("read_plan: '" + path + "': not a cordgrasp plan (format != " + kFormat + ")");
+  if (j.value("format_version", 0) == 1)
+    throw InputError("read_plan: '" + path + "': format_version 1 (untyped parameters) is no "
+                     "longer read; plan the object again");
   if (j.value("format_version", 0) != kFormatVersion)
     throw InputError("read_plan: '" + path + "': unsupported format_version " +
                      j.value("format_version", nlohmann::json(nullptr)).dump());
@@ -170,7 +255,8 @@ std::string plan_object_path(const nlohmann::json& plan) {
   return plan.at("inputs").at("object").at("path").get<std::string>();
 }
 
-PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand) {
+PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
+                            const std::string& source) {
   PlanDocument p;
   try {
     p.cordgrasp_version = j.value("cordgrasp_version", std::string());
@@ -183,15 +269,21 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand) {
     p.object_name = in_obj.value("name", std::string());
     p.object_units = in_obj.value("units", std::string("m"));
     p.object_triangles = in_obj.value("triangles", 0);
-    p.parameters = j.value("parameters", nlohmann::json::object());
-    p.planner = p.parameters.value("planner", std::string("cord"));
+    if (!j.contains("parameters")) throw InputError(source + ": parameters: missing");
+    JsonReadArchive parameters(j.at("parameters"), source, "parameters");
+    PlanParameters{&p}.Serialize(&parameters);
+    parameters.reject_unknown_keys();
+    if (p.planner != "cord" && p.planner != "generic")
+      throw InputError(source + ": parameters.planner: unknown planner '" + p.planner +
+                       "' (allowed: cord, generic)");
     p.stats = stats_from_json(j.value("stats", nlohmann::json::object()));
     if (p.hand_name != hand.name)
-      throw InputError("plan: made for hand '" + p.hand_name + "', not '" + hand.name + "'");
+      throw InputError(source + ": made for hand '" + p.hand_name + "', not '" + hand.name + "'");
     for (const auto& g : j.at("grasps")) {
       Grasp grasp;
-      grasp.X_OB = pose_from_json(g.at("hand_pose"));
-      grasp.X_OG = pose_from_json(g.at("gcp_pose"));
+      const std::string where = source + ": grasps[" + std::to_string(p.grasps.size()) + "]";
+      grasp.X_OB = pose_from_json(g.at("hand_pose"), where + ".hand_pose");
+      grasp.X_OG = pose_from_json(g.at("gcp_pose"), where + ".gcp_pose");
       grasp.q = joints_from_json(hand, g.at("joints"), "joints");
       grasp.q_preshape = joints_from_json(
           hand, g.value("preshape_joints", nlohmann::json::object()), "preshape_joints");
@@ -200,10 +292,10 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand) {
         const std::string link = c.at("link").get<std::string>();
         contact.link = find_link(hand, link);
         if (contact.link < 0)
-          throw InputError("plan: contact names link '" + link + "' that hand '" + hand.name +
+          throw InputError(source + ": contact names link '" + link + "' that hand '" + hand.name +
                            "' does not have");
-        contact.p_O = vec3_from_json(c.at("point_m"));
-        contact.n_O = vec3_from_json(c.at("normal"));
+        contact.p_O = point_from_json(c.at("point_m"), where + ".contacts.point_m");
+        contact.n_O = point_from_json(c.at("normal"), where + ".contacts.normal");
         grasp.contacts.push_back(contact);
       }
       grasp.force_closure = g.value("force_closure", false);
@@ -216,7 +308,8 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand) {
         try {
           grasp.region = region_from_json(g["region"]);
         } catch (const InputError& e) {
-          throw InputError("plan: grasp " + std::to_string(p.grasps.size()) + ": " + e.what());
+          throw InputError(source + ": grasp " + std::to_string(p.grasps.size()) + ": " +
+                           e.what());
         }
       }
       const auto t = g.value("timings_s", nlohmann::json::object());
@@ -226,7 +319,7 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand) {
       p.grasps.push_back(std::move(grasp));
     }
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(std::string("plan: malformed plan.json (") + e.what() + ")");
+    throw InputError(source + ": malformed plan.json (" + e.what() + ")");
   }
   return p;
 }

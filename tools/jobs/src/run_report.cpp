@@ -37,12 +37,10 @@ std::string run_report_markdown(const RunReport& rep) {
      << plan.object_units << ")\n";
   md << "- Hand: " << plan.hand_name << " (`" << plan.hand_path << "`)\n";
   md << "- Planner: " << plan.planner << ", up to "
-     << plan.parameters.value("grasps", 0) << " grasps, time limit "
-     << num(plan.parameters.value("time_limit_s", 0.0)) << " s, seed "
-     << plan.parameters.value("seed", nlohmann::json(0)).dump() << ", μ "
-     << num(plan.parameters.value("mu", 0.0)) << ", soft-finger radius "
-     << num(plan.parameters.value("soft_finger_radius_m", 0.0)) << " m, quality "
-     << plan.parameters.value("quality", std::string("textbook")) << "\n";
+     << plan.params.grasps << " grasps, time limit " << num(plan.params.time_limit_s)
+     << " s, seed " << plan.params.seed << ", μ " << num(plan.params.quality.contact.mu)
+     << ", soft-finger radius " << num(plan.params.quality.contact.soft_finger_radius_m)
+     << " m, quality " << to_string(plan.params.quality.mode) << "\n";
   if (rep.sim)
     md << "- Physics (Bullet): tests " << to_string(rep.sim->tests) << ", time step "
        << num(rep.sim->params.time_step_s, "%.5f") << " s, object mass "
@@ -91,8 +89,9 @@ std::string run_report_markdown(const RunReport& rep) {
       md << "– | – |\n";
     }
   }
-  md << "\nα: skewness (0 = the hand's axis on the object's principal axis; spec §9). "
-        "ε: wrench-space quality (spec §8). χ: XOR measure of the grasp region (spec §6).\n";
+  md << "\nα: skewness (0 = the hand's axis on the object's principal axis; "
+        "docs/algorithm.md §9). ε: wrench-space quality (docs/algorithm.md §8). χ: XOR measure "
+        "of the grasp region (docs/algorithm.md §6).\n";
 
   md << "\n## Timings\n\n| stage | wall [s] |\n|---|---|\n";
   if (plan.planner == "cord") md << "| cord exploration | " << num(s.exploration_s) << " |\n";

@@ -11,6 +11,7 @@
 #include "cordgrasp/core/version.h"
 #include "cordgrasp/sim/backend_info.h"
 #include "json_util.h"
+#include "params_json.h"
 #include "cordgrasp/jobs/text_format.h"
 
 namespace cordgrasp {
@@ -18,92 +19,10 @@ namespace cordgrasp {
 namespace {
 
 constexpr const char* kFormat = "cordgrasp-sim";
-constexpr int kFormatVersion = 1;
-
-const char* to_string(WorldFrame frame) {
-  return frame == WorldFrame::kApproachDown ? "approach_down" : "object";
-}
-
+constexpr int kFormatVersion = 2;
 }  // namespace
 
-nlohmann::json sim_params_to_json(const SimParams& p) {
-  const DecompositionParams& d = p.decomposition;
-  return {
-      {"mu", p.contact.mu},
-      {"soft_finger_radius_m", p.contact.soft_finger_radius_m},
-      {"link_margin_m", p.link_margin_m},
-      {"object_margin_m", p.object_margin_m},
-      {"time_step_s", p.time_step_s},
-      {"solver_iterations", p.solver_iterations},
-      {"erp", p.erp},
-      {"contact_stiffness_Npm", p.contact_stiffness_Npm},
-      {"contact_damping_Nspm", p.contact_damping_Nspm},
-      {"polyhedral_contacts", p.polyhedral_contacts},
-      {"solver_residual_threshold", p.solver_residual_threshold},
-      {"friction_erp", p.friction_erp},
-      {"cfm", p.cfm},
-      {"linear_slop_m", p.linear_slop_m},
-      {"gear_erp", p.gear_erp},
-      {"cone_friction", p.cone_friction},
-      {"articulated_warmstarting", p.articulated_warmstarting},
-      {"density_kgm3", p.density_kgm3},
-      {"mass_kg", p.mass_kg ? nlohmann::json(*p.mass_kg) : nlohmann::json(nullptr)},
-      {"object_shape", to_string(p.object_shape)},
-      {"convex_volume_ratio", p.convex_volume_ratio},
-      {"decomposition",
-       {{"concavity", d.concavity},
-        {"min_parts", d.min_parts},
-        {"max_hull_vertices", d.max_hull_vertices},
-        {"compacity_weight", d.compacity_weight},
-        {"volume_weight", d.volume_weight},
-        {"connect_distance", d.connect_distance},
-        {"add_extra_distance_points", d.add_extra_distance_points},
-        {"add_face_points", d.add_face_points}}},
-      {"close_speed", p.close_speed},
-      {"squeeze_rad", p.squeeze_rad},
-      {"squeeze_m", p.squeeze_m},
-      {"squeeze_direction", to_string(p.squeeze_direction)},
-      {"compliant_squeeze", p.compliant_squeeze},
-      {"default_effort_Nm", p.default_effort_Nm},
-      {"default_effort_N", p.default_effort_N},
-      {"effort_scale", p.effort_scale},
-      {"servo_gain_per_s", p.servo_gain_per_s},
-      {"hold_speed", p.hold_speed},
-      {"lock_passive_joints", p.lock_passive_joints},
-      {"hand_gravity_compensation", p.hand_gravity_compensation},
-      {"base_mass_scale", p.base_mass_scale},
-      {"protocol", to_string(p.protocol)},
-      {"world_frame", to_string(p.world_frame)},
-      {"gravity_mps2", p.gravity_mps2},
-      {"settle_time_s", p.settle_time_s},
-      {"squeeze_max_time_s", p.squeeze_max_time_s},
-      {"squeeze_min_time_s", p.squeeze_min_time_s},
-      {"stall_speed", p.stall_speed},
-      {"stall_time_s", p.stall_time_s},
-      {"lift_height_m", p.lift_height_m},
-      {"lift_time_s", p.lift_time_s},
-      {"lift_hold_s", p.lift_hold_s},
-      {"shake_amplitude_m", p.shake_amplitude_m},
-      {"shake_frequency_hz", p.shake_frequency_hz},
-      {"shake_time_s", p.shake_time_s},
-      {"rock_angle_rad", p.rock_angle_rad},
-      {"rock_frequency_hz", p.rock_frequency_hz},
-      {"rock_time_s", p.rock_time_s},
-      {"gravity6_time_s", p.gravity6_time_s},
-      {"reach_start_fraction", p.reach_start_fraction},
-      {"reach_start_clearance_m", p.reach_start_clearance_m},
-      {"rest_exit_time_s", p.rest_exit_time_s},
-      {"rest_drift_m", p.rest_drift_m},
-      {"rest_drift_rad", p.rest_drift_rad},
-      {"exit_on_failure", p.exit_on_failure},
-      {"no_contact_exit_time_s", p.no_contact_exit_time_s},
-      {"held_translation_m", p.held_translation_m},
-      {"held_rotation_rad", p.held_rotation_rad},
-      {"contact_distance_m", p.contact_distance_m},
-      {"unstable_speed_mps", p.unstable_speed_mps},
-      {"drop_distance_m", p.drop_distance_m},
-  };
-}
+nlohmann::json sim_params_to_json(const SimParams& p) { return params_to_json(p); }
 
 nlohmann::json sim_result_to_json(const SimResult& r, const HandModel& hand) {
   nlohmann::json phases = nlohmann::json::array();

@@ -21,8 +21,7 @@ SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const
   doc.object_name = plan.object_name;
   doc.object_units = plan.object_units;
   doc.object_triangles = static_cast<int>(mesh.triangles.size());
-  if (plan.parameters.contains("seed") && plan.parameters["seed"].is_number_unsigned())
-    doc.plan_seed = plan.parameters["seed"].get<std::uint64_t>();
+  doc.plan_seed = plan.params.seed;
   doc.params = params;
   doc.tests = tests;
   const int total = max_grasps < 0 ? static_cast<int>(plan.grasps.size())

@@ -1,5 +1,6 @@
 #pragma once
-// Where the project's own assets (hands built from primitives, generated objects) live.
+// Where the project's own assets (shipped hand descriptions, generated objects) live, and how
+// --hand / --object text names them.
 #include <string>
 
 namespace cordgrasp {
@@ -15,5 +16,17 @@ std::string shipped_objects_dir();
 /// (<assets>/objects/<name>.obj, e.g. "mug").
 /// @throws InputError naming the text and the shipped names when nothing matches.
 std::string resolve_object_path(const std::string& name_or_path);
+
+/// Directory of the shipped hands: <assets>/hands.
+std::string shipped_hands_dir();
+
+/// Resolves `--hand` text: an existing description file path, a hand folder holding
+/// <folder name>.yaml, or the name of a shipped hand (assets/hands/<name>.yaml or
+/// assets/hands/<name>/<name>.yaml).
+/// @throws InputError naming the text when nothing matches.
+std::string resolve_hand_path(const std::string& name_or_path);
+
+/// Name of the default hand shipped in assets/hands.
+const char* default_hand_name();
 
 }  // namespace cordgrasp

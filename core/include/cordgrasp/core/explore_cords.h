@@ -11,8 +11,8 @@ namespace cordgrasp {
 struct ExplorationStats {
   long long triangles_sampled = 0;  ///< guide triangles drawn by Algorithm 1
   long long triangles_acute = 0;    ///< of those, acute
-  long long seed_cords = 0;         ///< acute ones whose seed front cord was built (§3)
-  long long sets_tried = 0;         ///< eligible seeds that were scanned (§3.4, §4)
+  long long seed_cords = 0;         ///< acute ones whose seed front cord was built
+  long long sets_tried = 0;         ///< eligible seeds that were scanned
   long long sets_valid = 0;         ///< fully scanned sets from sampling
   long long improvement_tried = 0;  ///< local-improvement perturbations drawn
   long long improvement_valid = 0;  ///< valid sets they produced
@@ -23,11 +23,11 @@ struct ExplorationStats {
   bool hit_time_limit = false;      ///< the time cap stopped the run (result not reproducible)
 };
 
-/// Exploration stage (spec §5): Algorithm 1 samples guide triangles (P1 on s1, P2, P3 on s2,
-/// shuffled sphere sequences, acute only) until params.sets valid scanned sets exist or the
-/// iteration/time cap is hit, then local improvement; returns every valid set ranked by
-/// ascending χ (ties keep discovery order). Same params (seed) → identical regions, unless the
-/// time cap is hit. `palm_width_m` is W_palm (spec §4) [m].
+/// Exploration stage (docs/algorithm.md §5): Algorithm 1 samples guide triangles (P1 on s1, P2, P3
+/// on s2, shuffled sphere sequences, acute only) until params.sets valid scanned sets exist or the
+/// iteration/time cap is hit, then local improvement; returns every valid set ranked by ascending
+/// χ (ties keep discovery order). Same params (seed) → identical regions, unless the time cap is
+/// hit. `palm_width_m` is W_palm (docs/algorithm.md §4) [m].
 /// @throws std::invalid_argument for an empty mesh or palm_width_m ≤ 0.
 std::vector<GraspRegion> explore_cords(const Mesh& mesh, double palm_width_m,
                                        const CordParams& params = {},

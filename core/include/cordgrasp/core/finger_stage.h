@@ -8,22 +8,23 @@
 #include "cordgrasp/core/hand_collider.h"
 #include "cordgrasp/core/hand_model.h"
 #include "cordgrasp/core/mesh.h"
+#include "cordgrasp/core/serialize.h"
 
 namespace cordgrasp {
 
-/// Parameters of the finger stage (spec §7).
+/// Parameters of the finger stage (docs/algorithm.md §7).
 struct FingerParams {
-  double approach_step_m = 1e-3;  ///< approach step along GCP +z (§7.2)
-  double retreat_step_m = 1e-3;   ///< retreat step along GCP −z (§7.3)
-  int max_retreat_steps = 1000;   ///< give up (hand cannot get free) after this many (§7.3)
-  /// Closing step per iteration (§7.4): each actor joint moves by close_step × its signed
+  double approach_step_m = 1e-3;  ///< approach step along GCP +z
+  double retreat_step_m = 1e-3;   ///< retreat step along GCP −z
+  int max_retreat_steps = 1000;   ///< give up (hand cannot get free) after this many
+  /// Closing step per iteration: each actor joint moves by close_step × its signed
   /// speed (Simox directionAndSpeed), in the joint's units (rad, or m for prismatic joints,
   /// whose descriptions scale the speed accordingly, e.g. −0.1 → 2 mm).
   double close_step = 0.02;
   double contact_tolerance_m = 0.5e-3;  ///< bisection near contact stops this close to the
                                         ///< surface; links this close are contacts
   int max_close_iterations = 2000;      ///< safety cap on closing iterations
-  int min_contacts = 2;                 ///< fewer contacts → rejected (§7.4.5)
+  int min_contacts = 2;                 ///< fewer contacts → rejected
   /// Static links (palm, finger bases) within contact_tolerance_m of the object at the end are
   /// contacts too (Simox only records actor contacts); a palm the object rests on pushes it.
   bool static_link_contacts = true;
@@ -34,6 +35,21 @@ struct FingerParams {
   bool centre_single_actor = true;
   /// Largest gap that centring closes [m] (a finger farther from the object is not opposite).
   double centre_max_gap_m = 0.05;
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit(CORDGRASP_NVP(approach_step_m));
+    a->Visit(CORDGRASP_NVP(retreat_step_m));
+    a->Visit(CORDGRASP_NVP(max_retreat_steps));
+    a->Visit(CORDGRASP_NVP(close_step));
+    a->Visit(CORDGRASP_NVP(contact_tolerance_m));
+    a->Visit(CORDGRASP_NVP(max_close_iterations));
+    a->Visit(CORDGRASP_NVP(min_contacts));
+    a->Visit(CORDGRASP_NVP(static_link_contacts));
+    a->Visit(CORDGRASP_NVP(centre_single_actor));
+    a->Visit(CORDGRASP_NVP(centre_max_gap_m));
+  }
 };
 
 /// How one finger-stage attempt ended.
@@ -59,13 +75,13 @@ struct HandSetup {
   /// (kinematic neighbours, i.e. joined through at most one moving joint, or touching in
   /// preshape).
   std::vector<char> ignore_pair;
-  /// Thumb calibration R_GH = [o_h l_h z_h] in GCP coordinates (spec §7.1).
+  /// Thumb calibration R_GH = [o_h l_h z_h] in GCP coordinates (docs/algorithm.md §7.1).
   Eigen::Matrix3d R_GH = Eigen::Matrix3d::Identity();
   Eigen::Isometry3d X_GB = Eigen::Isometry3d::Identity();  ///< root in GCP frame, preshape
 };
 
-/// Thumb calibration of spec §7.1 in preshape, in GCP coordinates: columns o_h (thumb tip →
-/// centroid of the other finger tips, z removed), l_h = z_h × o_h, z_h. Finger tips are the
+/// Thumb calibration of docs/algorithm.md §7.1 in preshape, in GCP coordinates: columns o_h (thumb
+/// tip → centroid of the other finger tips, z removed), l_h = z_h × o_h, z_h. Finger tips are the
 /// geometry centres of the thumb's outermost link and of each other actor's outermost link.
 /// Identity when the hand names no thumb or no other finger.
 Eigen::Matrix3d thumb_calibration(const HandModel& hand, const Eigen::VectorXd& q_preshape);
@@ -75,7 +91,7 @@ Eigen::Matrix3d thumb_calibration(const HandModel& hand, const Eigen::VectorXd& 
 /// no actor or the collider's link count differs.
 HandSetup prepare_hand(const HandModel& hand, HandObjectCollider& collider);
 
-/// GCP pose for a grasp region (spec §7.1): at P1, z = unit(P_m − P1), roll from
+/// GCP pose for a grasp region (docs/algorithm.md §7.1): at P1, z = unit(P_m − P1), roll from
 /// o_w = unit(P_r − P_l ⊥ z) with R = [o_w l_w z]·R_GHᵀ; `flip_roll` adds 180° about z.
 Eigen::Isometry3d gcp_pose_for_region(const GraspRegion& region, const Eigen::Matrix3d& R_GH,
                                       bool flip_roll = false);
@@ -93,7 +109,7 @@ struct FingerResult {
   int close_iterations = 0;
 };
 
-/// Approach, retreat and close (spec §7.2–7.4): the hand in preshape with its GCP at
+/// Approach, retreat and close (docs/algorithm.md §7.2–§7.4): the hand in preshape with its GCP at
 /// `X_OG_start` moves along GCP +z in approach steps until it has travelled `approach_travel_m`
 /// or collides with the object; retreats along −z until collision-free; then closes every actor
 /// (0.02 rad × speed per iteration, bisection near contact; stops on the object, other actors
@@ -102,8 +118,8 @@ FingerResult run_finger_stage(const HandModel& hand, const HandSetup& setup,
                               HandObjectCollider& collider, const Eigen::Isometry3d& X_OG_start,
                               double approach_travel_m, const FingerParams& params = {});
 
-/// Closing only (spec §7.4) from joint vector `q_start` with the root at X_OB; fills q,
-/// contacts, close_iterations and status of `result`.
+/// Closing only (docs/algorithm.md §7.4) from joint vector `q_start` with the root at X_OB; fills
+/// q, contacts, close_iterations and status of `result`.
 void close_fingers(const HandModel& hand, const HandSetup& setup, HandObjectCollider& collider,
                    const Eigen::Isometry3d& X_OB, const Eigen::VectorXd& q_start,
                    const FingerParams& params, FingerResult& result);

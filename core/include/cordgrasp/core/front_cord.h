@@ -11,7 +11,7 @@
 
 namespace cordgrasp {
 
-/// Front cord of one guide triangle (spec §3), in the triangle's plane frame.
+/// Front cord of one guide triangle (docs/algorithm.md §3), in the triangle's plane frame.
 struct FrontCord {
   CordCase cord_case = CordCase::kI;
   PlaneFrame frame;                   ///< guide_frame(P1, P2, P3)
@@ -26,14 +26,14 @@ struct FrontCord {
 /// Why front_cord() gave no cord.
 enum class FrontCordFailure {
   kNone,
-  kGuideBlocked,         ///< P1P2 or P1P3 meets the object (spec §3.1)
-  kNoContact,            ///< Case I: no cross-section inside the guide triangle (spec §2.6)
-  kGraspPointsTooClose,  ///< ‖P_l − P_r‖ < min_grasp_gap_m (spec §2.6)
-  kTightenFailed,        ///< TIGHTEN failed (spec §2.4)
-  kTooFewSegments,       ///< Case II front cord with < 2 segments (spec §3.3)
+  kGuideBlocked,         ///< P1P2 or P1P3 meets the object (docs/algorithm.md §3)
+  kNoContact,            ///< Case I: no cross-section inside the guide triangle
+  kGraspPointsTooClose,  ///< ‖P_l − P_r‖ < min_grasp_gap_m (docs/algorithm.md §2.5)
+  kTightenFailed,        ///< TIGHTEN failed (docs/algorithm.md §2.3)
+  kTooFewSegments,       ///< Case II front cord with < 2 segments (docs/algorithm.md §3)
 };
 
-/// Front cord of guide triangle (P1, P2, P3) (spec §3): Case II when P2P3 meets the
+/// Front cord of guide triangle (P1, P2, P3) (docs/algorithm.md §3): Case II when P2P3 meets the
 /// cross-section (P_l, P_r = its hits nearest P2, P3), else Case I (P_l, P_r = first and last
 /// contacts of TIGHTEN on P1→P2→P3→P1); then TIGHTEN on P_r→P3→P1→P2→P_l. Works in the
 /// cross-section of the plane (Primitive A on the BVH). The triangle must be non-degenerate.

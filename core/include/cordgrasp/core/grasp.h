@@ -9,7 +9,7 @@
 
 namespace cordgrasp {
 
-/// A finger–object contact (spec §7.4), in the object frame.
+/// A finger–object contact (docs/algorithm.md §7.4), in the object frame.
 struct Contact {
   int link = -1;                                    ///< HandModel link index
   Eigen::Vector3d p_O = Eigen::Vector3d::Zero();    ///< contact point on the object [m]
@@ -32,8 +32,8 @@ struct Grasp {
   Eigen::VectorXd q_preshape;      ///< joint vector before closing
   std::vector<Contact> contacts;
   bool force_closure = false;
-  double epsilon = 0.0;            ///< ε quality (spec §8), in the chosen mode
-  double alpha_rad = 0.0;          ///< skewness α (spec §9) [rad], in [0, π/4]
+  double epsilon = 0.0;            ///< ε quality (docs/algorithm.md §8), in the chosen mode
+  double alpha_rad = 0.0;          ///< skewness α (docs/algorithm.md §9) [rad], in [0, π/4]
   std::optional<int> region_rank;  ///< cord planner: rank of the region (0 = lowest χ)
   std::optional<double> chi_m2;    ///< cord planner: χ of that region [m²]
   std::optional<GraspRegion> region;  ///< cord planner: the region itself (cords, P1, P_l, P_r)

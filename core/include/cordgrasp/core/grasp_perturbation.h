@@ -2,6 +2,7 @@
 #include <cstdint>
 
 #include "cordgrasp/core/grasp.h"
+#include "cordgrasp/core/serialize.h"
 
 namespace cordgrasp {
 
@@ -10,6 +11,13 @@ namespace cordgrasp {
 struct PerturbationParams {
   double offset_m = 1e-4;   ///< the hand is moved by exactly this far, in a random direction
   double turn_rad = 1e-3;   ///< and turned by exactly this much, about a random axis through the GCP
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit(CORDGRASP_NVP(offset_m));
+    a->Visit(CORDGRASP_NVP(turn_rad));
+  }
 };
 
 /// `grasp` with its hand (root and GCP, preshape and joints unchanged) moved and turned

@@ -14,10 +14,22 @@ struct PlanParams {
   int grasps = 1;              ///< stop after this many force-closure grasps
   double time_limit_s = 10.0;  ///< wall-clock cap of the whole plan, exploration included [s]
   std::uint64_t seed = 1;      ///< generic planner sampling (the cord planner's is CordParams')
-  FingerParams finger;         ///< finger stage (spec §7)
-  QualityParams quality;       ///< force closure and ε (spec §8)
-  bool roll_retry = true;      ///< cord: retry a failed region rolled 180° about z (§7.1)
+  FingerParams finger;         ///< finger stage (docs/algorithm.md §7)
+  QualityParams quality;       ///< force closure and ε (docs/algorithm.md §8)
+  bool roll_retry = true;      ///< cord: retry a failed region rolled 180° about z
   int max_attempts = 1000000;  ///< generic: cap on attempts besides the time limit
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit(CORDGRASP_NVP(grasps));
+    a->Visit(CORDGRASP_NVP(time_limit_s));
+    a->Visit(CORDGRASP_NVP(seed));
+    a->Visit(CORDGRASP_NVP(finger));
+    a->Visit(CORDGRASP_NVP(quality));
+    a->Visit(CORDGRASP_NVP(roll_retry));
+    a->Visit(CORDGRASP_NVP(max_attempts));
+  }
 };
 
 /// What a plan did, for reports and benchmarks. Times are wall-clock [s].

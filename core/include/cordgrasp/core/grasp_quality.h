@@ -7,10 +7,11 @@
 #include "cordgrasp/core/contact_model.h"
 #include "cordgrasp/core/grasp.h"
 #include "cordgrasp/core/mesh.h"
+#include "cordgrasp/core/serialize.h"
 
 namespace cordgrasp {
 
-/// How force closure and ε are computed (spec §8).
+/// How force closure and ε are computed (docs/algorithm.md §8).
 enum class QualityMode {
   kTextbook,  ///< real μ; FC iff the origin is inside the hull by more than min_epsilon;
               ///< ε = origin→hull distance
@@ -22,9 +23,14 @@ enum class QualityMode {
 const char* to_string(QualityMode mode);
 
 /// Parses "textbook" / "simox". @throws std::invalid_argument on anything else.
-QualityMode quality_mode_from_string(const std::string& text);
+QualityMode parse_quality_mode(const std::string& text);
 
-/// Parameters of the grasp wrench space (spec §8).
+/// Old name of parse_quality_mode.
+inline QualityMode quality_mode_from_string(const std::string& text) {
+  return parse_quality_mode(text);
+}
+
+/// Parameters of the grasp wrench space (docs/algorithm.md §8).
 struct QualityParams {
   ContactModel contact;  ///< μ (textbook mode) and cone edges
   /// Textbook mode: force closure needs ε above this. Grasps whose contacts leave the origin on
@@ -36,31 +42,44 @@ struct QualityParams {
   double simox_fc_tolerance = 1e-4;  ///< Simox accepts max facet offset ≤ this as FC
   int simox_ows_faces = 300;         ///< faces sampled for the object wrench space
   std::uint64_t seed = 1;            ///< seeds the OWS face sampling (simox mode)
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit(CORDGRASP_NVP(contact));
+    a->Visit(CORDGRASP_NVP(min_epsilon));
+    a->Visit(CORDGRASP_NVP(mode));
+    a->Visit(CORDGRASP_NVP(simox_mu_eff));
+    a->Visit(CORDGRASP_NVP(simox_fc_tolerance));
+    a->Visit(CORDGRASP_NVP(simox_ows_faces));
+    a->Visit(CORDGRASP_NVP(seed));
+  }
 };
 
 /// 6D wrench (force; λ·torque).
 using Wrench = Eigen::Matrix<double, 6, 1>;
 
-/// Object-dependent constants of the wrench space, computed once per object (spec §8).
+/// Object-dependent constants of the wrench space, computed once per object
+/// (docs/algorithm.md §8).
 struct WrenchSpaceObject {
   Eigen::Vector3d center_O = Eigen::Vector3d::Zero();  ///< torque reference c: vertex mean [m]
   double torque_scale_per_m = 1.0;                     ///< λ = 2/L, L = longest AABB side [1/m]
   double ows_min_offset = 0.0;  ///< simox mode: OWS min facet distance from its centroid
 };
 
-/// Computes c, λ and (simox mode) the OWS of 300 seeded random faces (spec §8).
+/// Computes c, λ and (simox mode) the OWS of 300 seeded random faces (docs/algorithm.md §8).
 /// @throws std::invalid_argument for an empty mesh.
 WrenchSpaceObject prepare_wrench_space(const Mesh& mesh, const QualityParams& params);
 
 /// Cone-edge wrenches of one contact: force directions unit(−n + μ(cos φ_j t1 + sin φ_j t2)),
-/// φ_j = 2πj/edges, pushing into the object, torque λ·(p − c) × f (spec §8). With
+/// φ_j = 2πj/edges, pushing into the object, torque λ·(p − c) × f (docs/algorithm.md §8). With
 /// soft_finger_radius_m = ρ > 0 each edge comes twice, with torque ± λ·μ·ρ·(f·(−n))·(−n) added
 /// (torsional friction of a soft finger).
 std::vector<Wrench> contact_wrenches(const Eigen::Vector3d& p_O, const Eigen::Vector3d& n_O,
                                      double mu, int edges, const Eigen::Vector3d& center_O,
                                      double torque_scale_per_m, double soft_finger_radius_m = 0.0);
 
-/// Convex hull of 6D wrenches via Qhull ("QJ"), as signed facet offsets (spec §8).
+/// Convex hull of 6D wrenches via Qhull ("QJ"), as signed facet offsets (docs/algorithm.md §8).
 struct WrenchHull {
   bool valid = false;                  ///< false: < 7 affinely independent points or Qhull failed
   double max_offset = 0.0;             ///< max_f b_f: the origin is inside iff < 0
@@ -80,8 +99,8 @@ struct GraspQuality {
                          ///< program already showed the origin outside: textbook mode)
 };
 
-/// Force-closure test and ε of contacts on an object (spec §8). Fewer than 2 contacts, or a
-/// degenerate hull, give not-FC and ε = 0.
+/// Force-closure test and ε of contacts on an object (docs/algorithm.md §8). Fewer than 2
+/// contacts, or a degenerate hull, give not-FC and ε = 0.
 GraspQuality evaluate_grasp_quality(const std::vector<Contact>& contacts,
                                     const WrenchSpaceObject& object, const QualityParams& params);
 

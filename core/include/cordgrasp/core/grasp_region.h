@@ -7,11 +7,11 @@ namespace cordgrasp {
 /// 3D polyline [m].
 using Polyline3 = std::vector<Eigen::Vector3d>;
 
-/// Which front-cord construction produced a region (spec §3.2 Case I, §3.3 Case II).
+/// Which front-cord construction produced a region (Case I or II, docs/algorithm.md §3).
 enum class CordCase { kI = 1, kII = 2 };
 
 /// A scanned set of front cords: one candidate grasp region of the exploration stage
-/// (spec §3–§6). All points in the object frame [m].
+/// (docs/algorithm.md §3–§6). All points in the object frame [m].
 struct GraspRegion {
   Eigen::Vector3d p1 = Eigen::Vector3d::Zero();   ///< seed guide triangle T0 = (P1, P2, P3)
   Eigen::Vector3d p2 = Eigen::Vector3d::Zero();
@@ -23,9 +23,9 @@ struct GraspRegion {
   CordCase cord_case = CordCase::kI;
   int n = 0;                    ///< cords per side; front_cords has 2n + 1 entries
   std::vector<Polyline3> front_cords;  ///< i = −n..n in order; front_cords[n] is the seed's
-  double xi_m = 0.0;            ///< ξ of the seed front cord [m] (spec §1)
-  double chi_m2 = 0.0;          ///< XOR measure χ, Eq. (1) [m²] (spec §6)
-  bool from_local_improvement = false;  ///< found by the local-improvement pass (spec §5)
+  double xi_m = 0.0;            ///< ξ of the seed front cord [m] (docs/algorithm.md §1)
+  double chi_m2 = 0.0;          ///< XOR measure χ, Eq. (1) [m²] (docs/algorithm.md §6)
+  bool from_local_improvement = false;  ///< found by local improvement (docs/algorithm.md §5)
 };
 
 }  // namespace cordgrasp

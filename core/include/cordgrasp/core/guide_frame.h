@@ -3,7 +3,8 @@
 
 namespace cordgrasp {
 
-/// Orthonormal frame of a guide plane Π (spec §1): origin, in-plane axes e1, e2, normal ν.
+/// Orthonormal frame of a guide plane Π (docs/algorithm.md §1): origin, in-plane axes e1, e2,
+/// normal ν.
 struct PlaneFrame {
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();  ///< [m]
   Eigen::Vector3d e1 = Eigen::Vector3d::UnitX();
@@ -19,13 +20,14 @@ struct PlaneFrame {
   Eigen::Vector3d to_3d(const Eigen::Vector2d& q) const { return origin + q.x() * e1 + q.y() * e2; }
 };
 
-/// Frame of guide triangle T = (P1, P2, P3) (spec §1): origin P1, e1 = unit(P2−P1),
+/// Frame of guide triangle T = (P1, P2, P3) (docs/algorithm.md §1): origin P1, e1 = unit(P2−P1),
 /// ν = unit((P2−P1)×(P3−P1)), e2 = ν×e1. In it T is counter-clockwise.
 /// The triangle must be non-degenerate.
 PlaneFrame guide_frame(const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
                        const Eigen::Vector3d& p3);
 
-/// Acute test of Algorithm 1 (spec §5): all three (Pb−Pa)·(Pc−Pa) > 0 and area > min_area_m2.
+/// Acute test of Algorithm 1 (docs/algorithm.md §5): all three (Pb−Pa)·(Pc−Pa) > 0 and area >
+/// min_area_m2.
 bool is_acute_triangle(const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
                        const Eigen::Vector3d& p3, double min_area_m2 = 1e-12);
 

@@ -6,7 +6,8 @@
 
 namespace cordgrasp {
 
-/// Closest points between one hand link and the object, in the object frame (spec §7.4).
+/// Closest points between one hand link and the object, in the object frame
+/// (docs/algorithm.md §7.4).
 struct LinkObjectProximity {
   double distance_m = 0.0;  ///< signed: > 0 separated, < 0 penetration depth [m]
   Eigen::Vector3d p_link_O = Eigen::Vector3d::Zero();    ///< witness point on the link [m]
@@ -16,7 +17,7 @@ struct LinkObjectProximity {
 
 /// Collision and proximity queries between the links of one hand and one rigid object, the seam
 /// between the planner (core, no Bullet) and its collision backend (sim, Bullet; see
-/// cordgrasp/sim/bullet_hand_collider.h). All poses are in the object frame O: the object
+/// cordgrasp/collision/bullet_hand_collider.h). All poses are in the object frame O: the object
 /// sits at the identity. Link indices are HandModel link indices. Queries are kinematic only.
 /// Links without collision geometry never collide. Not thread-safe: one instance per thread.
 class HandObjectCollider {

@@ -17,8 +17,9 @@ struct Finger {
 };
 
 /// The fingers of `hand`, ordered by actor then root link. The fingertip is the finger's
-/// collision-geometry point (geometry_points) farthest from its root joint, in preshape: a
-/// point fixed on the finger, to follow as it closes (spec §7.1 uses thumb and finger tips).
+/// collision-geometry point (geometry_points) farthest from its root joint, in preshape: a point
+/// fixed on the finger, to follow as it closes (docs/algorithm.md §7.1 uses thumb and finger
+/// tips).
 std::vector<Finger> hand_fingers(const HandModel& hand);
 
 }  // namespace cordgrasp

@@ -67,13 +67,13 @@ struct Joint {
 struct Actor {
   struct Entry {
     int joint = -1;
-    double direction_speed = 1.0;  ///< signed relative closing speed (spec §7.4)
+    double direction_speed = 1.0;  ///< signed relative closing speed (docs/algorithm.md §7.4)
   };
   std::string name;
   std::vector<Entry> joints;
 };
 
-/// Grasp centre point (spec §1): its +z is the approach direction, into the object.
+/// Grasp centre point (docs/algorithm.md §1): its +z is the approach direction, into the object.
 struct GraspCenterPoint {
   int link = -1;
   Eigen::Isometry3d X_LG = Eigen::Isometry3d::Identity();  ///< GCP frame in that link's frame
@@ -92,8 +92,8 @@ struct HandModel {
   GraspCenterPoint gcp;
   Eigen::VectorXd preshape;      ///< open configuration, one entry per joint
   std::vector<Actor> actors;     ///< closing fingers
-  std::vector<int> thumb_links;  ///< links of the thumb (roll calibration, spec §7.1)
-  std::optional<double> palm_width_m;  ///< W_palm override (spec §4.6); measured when absent
+  std::vector<int> thumb_links;  ///< links of the thumb (roll calibration, docs/algorithm.md §7.1)
+  std::optional<double> palm_width_m;  ///< W_palm override (docs/algorithm.md §4), else measured
   /// Default contact patch radius of this hand's pads [m] (ContactModel::soft_finger_radius_m;
   /// planner and physics, unless --soft-finger-radius is given). 0: point contacts. Two-finger
   /// grippers need > 0: two point contacts are never force closure.

@@ -34,7 +34,7 @@ Eigen::Isometry3d root_pose_for_gcp(const HandModel& hand, const Eigen::VectorXd
 /// every contact c, at joint vector q (couplings applied here), the root link at X_OB in the
 /// object frame: τ = Σ_c J_c(q)ᵀ·f_c over the joints upstream of each contact's link [N·m or N].
 /// A mimic joint's torque is pooled onto its master (× multiplier), as its drive is the
-/// master's; mimic entries are 0. Used by the physics squeeze (issue 5).
+/// master's; mimic entries are 0. Used by the physics squeeze (docs/physics.md §3).
 /// @throws std::invalid_argument when q or forces_O have the wrong size or a contact names no
 /// link.
 Eigen::VectorXd contact_force_torques(const HandModel& hand, const Eigen::VectorXd& q,

@@ -6,8 +6,8 @@
 
 namespace cordgrasp {
 
-/// Triangle soup in meters (spec §1): no manifoldness, closure or consistent orientation is
-/// assumed. Coordinates are in the object's own frame, as authored.
+/// Triangle soup in meters (docs/algorithm.md §1): no manifoldness, closure or consistent
+/// orientation is assumed. Coordinates are in the object's own frame, as authored.
 struct Mesh {
   std::vector<Eigen::Vector3d> vertices;   ///< [m]
   std::vector<Eigen::Vector3i> triangles;  ///< indices into `vertices`, orientation unreliable

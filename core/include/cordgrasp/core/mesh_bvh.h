@@ -6,8 +6,9 @@
 
 namespace cordgrasp {
 
-/// Bounding-volume hierarchy over a triangle soup, used to slice it with planes (spec §2.2) and
-/// to cast segments against it (spec §2.3). Holds its own copy of the geometry.
+/// Bounding-volume hierarchy over a triangle soup, used to slice it with planes (docs/algorithm.md
+/// §2.1) and to cast segments against it (docs/algorithm.md §2.2). Holds its own copy of the
+/// geometry.
 struct MeshBvh {
   struct Node {
     Eigen::Vector3d lo = Eigen::Vector3d::Zero();      ///< box min [m]
@@ -24,8 +25,18 @@ struct MeshBvh {
   std::vector<int> triangle_ids;           ///< index in Mesh::triangles of triangles[k]
 };
 
+/// How build_mesh_bvh orders triangles along the split axis.
+enum class MeshBvhSplit {
+  kCentroidThenIndex,  ///< centroid coordinate, ties by triangle index
+  /// Sum of the corner coordinates, ties as std::nth_element leaves them; centroids for the
+  /// axis choice as sum·(1/3). The order the hand–object collider has always visited triangles
+  /// in: its closest-point witnesses on flat contacts (equal-distance triangles) depend on it.
+  kCornerSum,
+};
+
 /// Builds a median-split BVH (longest centroid axis) with at most `max_leaf_triangles` per leaf.
 /// Deterministic. @throws std::invalid_argument when max_leaf_triangles < 1.
-MeshBvh build_mesh_bvh(const Mesh& mesh, int max_leaf_triangles = 4);
+MeshBvh build_mesh_bvh(const Mesh& mesh, int max_leaf_triangles = 4,
+                       MeshBvhSplit split = MeshBvhSplit::kCentroidThenIndex);
 
 }  // namespace cordgrasp

@@ -8,6 +8,9 @@ namespace cordgrasp {
 /// Length units of a mesh file; converted to meters at load.
 enum class LengthUnits { kMeters, kMillimeters, kAuto };
 
+/// "m", "mm", "auto".
+const char* to_string(LengthUnits units);
+
 /// Parses "m", "mm" or "auto". @throws std::invalid_argument otherwise.
 LengthUnits parse_length_units(const std::string& text);
 

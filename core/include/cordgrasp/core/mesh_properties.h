@@ -17,13 +17,13 @@ struct Aabb {
 /// Axis-aligned bounds of all vertices [m]. Empty mesh gives a zero box.
 Aabb mesh_bounds(const Mesh& mesh);
 
-/// Barycenter C: the vertex mean, as Simox TriMeshModel::getCOM (spec §1) [m].
+/// Barycenter C: the vertex mean, as Simox TriMeshModel::getCOM (docs/algorithm.md §1) [m].
 Eigen::Vector3d vertex_mean(const Mesh& mesh);
 
-/// Bounding-sphere radius r = max ‖V − C‖ over vertices (spec §1) [m].
+/// Bounding-sphere radius r = max ‖V − C‖ over vertices (docs/algorithm.md §1) [m].
 double bounding_radius(const Mesh& mesh, const Eigen::Vector3d& center);
 
-/// Area-weighted surface principal axes (spec §9).
+/// Area-weighted surface principal axes (docs/algorithm.md §9).
 struct PrincipalAxes {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  ///< area-weighted centroid ḡ [m]
   Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();  ///< unit columns, descending variance
@@ -31,8 +31,8 @@ struct PrincipalAxes {
   double area_m2 = 0.0;                                ///< total surface area [m²]
 };
 
-/// Area-weighted surface covariance eigen-decomposition (spec §9); axes.col(0) is the object's
-/// largest principal axis. Works on soups.
+/// Area-weighted surface covariance eigen-decomposition (docs/algorithm.md §9); axes.col(0) is the
+/// object's largest principal axis. Works on soups.
 PrincipalAxes principal_axes(const Mesh& mesh);
 
 /// Surface area of the soup [m²].

@@ -23,7 +23,7 @@ struct CylinderObjectParams {
   double diameter_m = 0.035;  ///< [m]
   double length_m = 0.25;     ///< along z [m]
 };
-/// Closed long cylinder standing along z (spec §10 Fig. 11 object).
+/// Closed long cylinder standing along z (the paper's Fig. 11 object).
 Mesh make_long_cylinder_object(const CylinderObjectParams& p = {});
 
 struct SphereObjectParams {

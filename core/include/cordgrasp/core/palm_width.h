@@ -3,12 +3,12 @@
 
 namespace cordgrasp {
 
-/// W_palm measured on the hand in preshape (spec §4 item 6) [m]: the extent, along the hand's
-/// lateral (finger-spread) axis l = z_GCP × o, of the collision geometry of every non-thumb
+/// W_palm measured on the hand in preshape (docs/algorithm.md §4) [m]: the extent, along the
+/// hand's lateral (finger-spread) axis l = z_GCP × o, of the collision geometry of every non-thumb
 /// finger (hand_fingers), i.e. the lateral span between the outer fingers' centre lines plus one
-/// finger width. o is the opposition direction of spec §7.1: from the thumb tip to the centroid
-/// of the other fingertips, projected onto the GCP xy-plane (GCP x when no finger is a thumb).
-/// With only thumb fingers, all fingers are measured.
+/// finger width. o is the opposition direction of docs/algorithm.md §7.1: from the thumb tip to
+/// the centroid of the other fingertips, projected onto the GCP xy-plane (GCP x when no finger is
+/// a thumb). With only thumb fingers, all fingers are measured.
 /// @throws std::invalid_argument when no actor moves collision geometry.
 double measure_palm_width(const HandModel& hand);
 

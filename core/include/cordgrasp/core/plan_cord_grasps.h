@@ -11,13 +11,13 @@
 
 namespace cordgrasp {
 
-/// Target travel D of the approach (spec §7.2): distance from P1 along unit(P_m − P1) to the
-/// first surface hit, or ‖P_m − P1‖ when the ray misses [m].
+/// Target travel D of the approach (docs/algorithm.md §7.2): distance from P1 along unit(P_m − P1)
+/// to the first surface hit, or ‖P_m − P1‖ when the ray misses [m].
 double approach_travel_m(const Mesh& mesh, const GraspRegion& region);
 
-/// Finger stage and force-closure check on grasp regions in ascending χ (spec §7–8), until
-/// params.grasps force-closure grasps or the time limit; each region is tried as computed, then
-/// rolled 180° if that fails. `regions` may come in any order; `order`, when given, is the
+/// Finger stage and force-closure check on grasp regions in ascending χ (docs/algorithm.md §7–§8),
+/// until params.grasps force-closure grasps or the time limit; each region is tried as computed,
+/// then rolled 180° if that fails. `regions` may come in any order; `order`, when given, is the
 /// processing order instead (indices into `regions`); a grasp's region_rank is its region's
 /// position in the processing order. `exploration_s` is recorded in the stats and every grasp's
 /// times. `collider` must be built for this hand and mesh.
@@ -28,14 +28,14 @@ PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand
                                          const std::vector<int>* order = nullptr);
 
 /// Processing order of the cord planner: regions in ascending χ, except that sets shrunk by
-/// SideCordPolicy::kShrink (n below cords_per_side(), spec §11.6) come after every full set.
-/// Shrunk sets have fewer, less tilted cords, hence a lower χ for reasons unrelated to the
+/// SideCordPolicy::kShrink (n below cords_per_side(), docs/algorithm.md §4) come after every full
+/// set. Shrunk sets have fewer, less tilted cords, hence a lower χ for reasons unrelated to the
 /// object's shape (on the long cylinder they rank oblique corner sets first). With the other
 /// policies n is never shrunk and this is plain ascending χ.
 std::vector<int> cord_region_order(const std::vector<GraspRegion>& regions, double palm_width_m,
                                    const CordParams& cord);
 
-/// The cord-driven planner ([P] §III–V): explore_cords() with W_palm = palm_width(hand), then
+/// The cord-driven planner (paper §III–§V): explore_cords() with W_palm = palm_width(hand), then
 /// plan_cord_grasps_from_regions() in cord_region_order(). The exploration shares
 /// params.time_limit_s (its own cap is min(cord.time_limit_s, params.time_limit_s)).
 /// `exploration`, when given, receives its stats.

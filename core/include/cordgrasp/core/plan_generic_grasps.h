@@ -14,7 +14,7 @@ namespace cordgrasp {
 /// Ray parity is right for closed meshes whatever their winding, concave ones included.
 Eigen::Vector3d outward_face_normal(const Mesh& mesh, int tri, const Eigen::Vector3d& p_O);
 
-/// Baseline like Simox GenericGraspPlanner + ApproachMovementSurfaceNormal ([P] §V): random
+/// Baseline like Simox GenericGraspPlanner + ApproachMovementSurfaceNormal (paper §V): random
 /// surface point (area-weighted), GCP there with +z along the inward normal and a uniform random
 /// roll, retreat until collision-free, close, force-closure check; repeated until params.grasps
 /// force-closure grasps, the time limit or params.max_attempts. Seeded by params.seed.

@@ -15,15 +15,17 @@ struct Segment2 {
   Eigen::Vector2d b = Eigen::Vector2d::Zero();
 };
 
-/// Planar cross-section of a triangle soup (spec §2.2), in the plane's 2D coordinates.
+/// Planar cross-section of a triangle soup (docs/algorithm.md §2.1), in the plane's 2D
+/// coordinates.
 struct CrossSection {
   std::vector<Segment2> segments;       ///< S: one segment per mixed-sign triangle [m]
   std::vector<Eigen::Vector2d> points;  ///< V_S: segment endpoints, shared-edge crossings merged
 };
 
-/// Primitive A (spec §2.2) by brute force over all triangles: vertex sign s = ν·(X−O) > 0 is
-/// "+", else "−"; each mixed triangle gives the segment between its two mixed-edge crossings,
-/// each computed from the lower-indexed vertex so shared edges give bit-identical points.
+/// Primitive A (docs/algorithm.md §2.1) by brute force over all triangles: vertex sign s = ν·(X−O)
+/// > 0 is "+", else "−"; each mixed triangle gives the segment between its two mixed-edge
+/// crossings, each computed from the lower-indexed vertex so shared edges give bit-identical
+/// points.
 CrossSection plane_cross_section(const Mesh& mesh, const PlaneFrame& plane);
 
 /// Same result as the brute-force overload (same segments, possibly in another order), visiting

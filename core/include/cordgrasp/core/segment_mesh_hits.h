@@ -14,15 +14,16 @@ struct SegmentHit {
   int triangle = -1;  ///< index in Mesh::triangles (first of merged duplicates)
 };
 
-/// Options of Primitive B (spec §2.3).
+/// Options of Primitive B (docs/algorithm.md §2.2).
 struct SegmentHitOptions {
   double merge_m = 1e-9;          ///< hits closer than this along the segment are merged [m]
   double ignore_near_p0_m = 0.0;  ///< drop hits within this distance of p0 (ε_self = 1e-7 for
                                   ///< an on-surface origin) [m]
 };
 
-/// Primitive B (spec §2.3): all hits of segment p0→p1 with the soup, two-sided Möller–Trumbore
-/// in double precision, sorted by t, merged within `merge_m`. Brute force over all triangles.
+/// Primitive B (docs/algorithm.md §2.2): all hits of segment p0→p1 with the soup, two-sided
+/// Möller–Trumbore in double precision, sorted by t, merged within `merge_m`. Brute force over all
+/// triangles.
 std::vector<SegmentHit> segment_mesh_hits(const Mesh& mesh, const Eigen::Vector3d& p0,
                                           const Eigen::Vector3d& p1,
                                           const SegmentHitOptions& options = {});

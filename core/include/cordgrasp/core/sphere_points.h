@@ -6,7 +6,7 @@
 
 namespace cordgrasp {
 
-/// `count` deterministic near-uniform points on the unit sphere (spec §5).
+/// `count` deterministic near-uniform points on the unit sphere (docs/algorithm.md §5).
 /// kYershovaLaValle: the Lindemann–LaValle incremental lattice (index i = 1, 2, …; base-4
 /// digits, least significant first, digit d at depth k adds 2^−k·L[d]) mapped onto the 6 cube
 /// faces in turn by spherical bilinear interpolation (slerp along two opposite face edges,

@@ -7,7 +7,7 @@ namespace cordgrasp {
 /// Area of a simple polygon (absolute shoelace) [m²].
 double polygon_area(const std::vector<Eigen::Vector2d>& polygon);
 
-/// A(P ⊕ Q) with Clipper 6.4.2 (spec §6): coordinates scaled by `scale` and rounded,
+/// A(P ⊕ Q) with Clipper 6.4.2 (docs/algorithm.md §6): coordinates scaled by `scale` and rounded,
 /// AddPath(P, subject), AddPath(Q, clip), Execute(ctXor, NonZero, NonZero), Σ Area / S².
 /// A polygon with < 3 vertices or zero area gives the other's area [m²].
 double xor_area(const std::vector<Eigen::Vector2d>& p, const std::vector<Eigen::Vector2d>& q,

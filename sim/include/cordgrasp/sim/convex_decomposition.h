@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cordgrasp/core/mesh.h"
+#include "cordgrasp/core/serialize.h"
 
 namespace cordgrasp {
 
@@ -24,6 +25,20 @@ struct DecompositionParams {
   /// much faster than linearly); each part's hull is then built from the original vertices
   /// of its clusters. ≤ 0: no clustering.
   int max_input_triangles = 800;
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit(CORDGRASP_NVP(concavity));
+    a->Visit(CORDGRASP_NVP(min_parts));
+    a->Visit(CORDGRASP_NVP(max_hull_vertices));
+    a->Visit(CORDGRASP_NVP(compacity_weight));
+    a->Visit(CORDGRASP_NVP(volume_weight));
+    a->Visit(CORDGRASP_NVP(connect_distance));
+    a->Visit(CORDGRASP_NVP(add_extra_distance_points));
+    a->Visit(CORDGRASP_NVP(add_face_points));
+    a->Visit(CORDGRASP_NVP(max_input_triangles));
+  }
 };
 
 /// Convex parts of a mesh, in the mesh frame.

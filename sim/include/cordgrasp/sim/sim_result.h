@@ -8,7 +8,7 @@
 
 namespace cordgrasp {
 
-/// Outcome of one phase of the physics validation (issue 5).
+/// Outcome of one phase of the physics validation (docs/physics.md §4).
 enum class Outcome {
   kHeld,      ///< object moved < held_translation_m, turned < held_rotation_rad relative to the
               ///< hand since the end of closing, and still touches the hand

@@ -49,9 +49,9 @@ struct PhaseSnapshot {
 /// phase_end = false every SimParams::trace_interval_s inside the phases.
 using PhaseHook = std::function<void(const PhaseSnapshot&)>;
 
-/// Physics validation of a planned grasp (issue 5): settle, close (squeeze), then the tests —
-/// lift, shake (continuing from the lifted hand) and gravity6 (a fresh world closed again).
-/// Deterministic: the same inputs give the same result (wall times aside).
+/// Physics validation of a planned grasp (docs/physics.md §3): settle, close (squeeze), then the
+/// tests — lift, shake (continuing from the lifted hand) and gravity6 (a fresh world closed
+/// again). Deterministic: the same inputs give the same result (wall times aside).
 /// @throws std::invalid_argument when the grasp's joint vectors do not fit the hand, the mesh
 /// has no triangle or the hand has no mass.
 SimResult validate_grasp(const Mesh& mesh, const HandModel& hand, const Grasp& grasp,

@@ -1,5 +1,5 @@
 #pragma once
-// `cordgrasp bench` / `cordgrasp merge` (issue 7): the list of attempts (object × hand ×
+// `cordgrasp bench` / `cordgrasp merge`: the list of attempts (object × hand ×
 // planner × repeat), one attempt run in-process, the results.csv row, the thread pool, shards,
 // merging and summary.md.
 //
@@ -141,7 +141,8 @@ std::vector<BenchResult> run_bench_attempts(const std::vector<BenchAttempt>& att
                                             const BenchParams& params, const BenchInputs& inputs,
                                             int jobs, const BenchProgress& progress = {});
 
-/// bench.json "parameters": everything rows depend on (not --jobs, --shard, output options).
+/// bench.json "parameters": everything rows depend on (not --jobs, --shard, output options);
+/// "job" holds every PlanJobParams field but the planner (its Serialize visitor).
 nlohmann::json bench_params_to_json(const BenchParams& params);
 
 /// Rows of several shard outputs, sorted by attempt. @throws InputError when two rows share an

@@ -6,26 +6,38 @@
 #include <string>
 
 #include "cordgrasp/core/contact_model.h"
+#include "cordgrasp/core/cord_params.h"
+#include "cordgrasp/core/grasp_plan.h"
 #include "cordgrasp/core/hand_model.h"
 #include "cordgrasp/core/mesh.h"
+#include "cordgrasp/core/mesh_io.h"
+#include "cordgrasp/core/serialize.h"
 #include "cordgrasp/jobs/plan_json.h"
 
 namespace cordgrasp {
 
-/// Planner options as the CLI takes them (units in names; defaults are the CLI's).
+/// One planning job's parameters: the planner and its typed parameter structs (the CLI binds
+/// its options to these fields, so its help shows their defaults).
 struct PlanJobParams {
   std::string planner = "cord";  ///< cord (Li et al. 2015) or generic (Simox-style baseline)
-  int grasps = 1;                ///< stop after this many force-closure grasps
-  double time_limit_s = 10.0;    ///< wall-clock limit of the plan [s]
-  std::uint64_t seed = 1;        ///< seed of every random choice
-  double mu = kDefaultFrictionCoefficient;  ///< friction coefficient (planner and physics)
-  /// Contact patch radius [m]; 0 = point contacts; unset: the hand's soft_finger_radius_m.
+  /// Shared planner parameters; plan.seed also seeds cord.seed and plan.quality.seed, and
+  /// plan.time_limit_s caps cord.time_limit_s (plan_job sets both).
+  PlanParams plan;
+  CordParams cord;  ///< cord planner: exploration parameters (seed, time limit from `plan`)
+  /// Contact patch radius [m]; 0 = point contacts; unset: the hand's soft_finger_radius_m
+  /// (overrides plan.quality.contact.soft_finger_radius_m).
   std::optional<double> soft_finger_radius_m;
-  std::string side_cords = "empty";         ///< empty, discard or shrink (SideCordPolicy)
-  std::string quality = "textbook";         ///< textbook or simox (spec §8)
-  std::string units = "m";                  ///< object file units: m, mm or auto
-  int cord_sets = 20;                       ///< cord: valid sets sampled (K, spec §4)
-  bool cord_local_improvement = true;       ///< cord: local improvement of the sets (§5)
+  LengthUnits units = LengthUnits::kMeters;  ///< object file units
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    a->Visit(CORDGRASP_NVP(planner));
+    a->Visit(CORDGRASP_NVP(plan));
+    a->Visit(CORDGRASP_NVP(cord));
+    a->Visit(CORDGRASP_NVP(soft_finger_radius_m));
+    a->Visit(CORDGRASP_NVP(units));
+  }
 };
 
 /// Loads the object mesh in p.units. Says on stderr when --units auto read it as millimetres,
@@ -33,8 +45,8 @@ struct PlanJobParams {
 /// @throws InputError as load_mesh.
 Mesh load_job_mesh(const PlanJobParams& p, const std::string& object_path);
 
-/// The friction model a plan was made with (μ, soft-finger radius from its parameters): the
-/// physics of validate, run and bench uses it too (one source of truth).
+/// The friction model a plan was made with (plan.params.quality.contact: μ, cone edges,
+/// soft-finger radius): the physics of validate, run and bench uses it too.
 ContactModel plan_contact_model(const PlanDocument& plan);
 
 /// Plans grasps on `mesh` (loaded from `object_path`) with `hand`: the document plan.json

@@ -1,11 +1,13 @@
 #pragma once
 // plan.json: what `cordgrasp plan` writes and `validate`, `render` and `run` read back.
 //
-// Layout (format_version 1), all lengths in meters, angles in radians:
-//   format: "cordgrasp-plan", format_version: 1, cordgrasp_version
+// Layout (format_version 2), all lengths in meters, angles in radians:
+//   format: "cordgrasp-plan", format_version: 2, cordgrasp_version
 //   inputs: {hand: {name, path, urdf_path}, object: {path, name, units, triangles}}
-//   parameters: {planner, grasps, time_limit_s, seed, mu, quality, cone_edges, finger{..},
-//                cord{..} (cord planner)}
+//   parameters: {planner, every PlanParams field (grasps, time_limit_s, seed, finger{..},
+//                quality{contact{mu, cone_edges, soft_finger_radius_m}, mode, ..}, ..),
+//                palm_width_m, cord: every CordParams field (null for the generic planner)},
+//                written and read through the structs' Serialize visitors (every key required)
 //   stats: {regions, regions_processed, attempts, force_closure, no_contact, one_contact,
 //           cannot_retreat, not_force_closure, setup_s, exploration_s, finger_s, quality_s,
 //           total_s, first_force_closure_s (null if none), timed_out}
@@ -18,9 +20,11 @@
 //             timings_s: {exploration, finger, quality}}]
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "cordgrasp/core/cord_params.h"
 #include "cordgrasp/core/grasp.h"
 #include "cordgrasp/core/grasp_plan.h"
 #include "cordgrasp/core/hand_model.h"
@@ -37,8 +41,10 @@ struct PlanDocument {
   std::string object_name;
   std::string object_units = "m";  ///< as given to --units (m, mm or auto)
   int object_triangles = 0;
-  std::string planner = "cord";                          ///< cord or generic
-  nlohmann::json parameters = nlohmann::json::object();  ///< every parameter, as written
+  std::string planner = "cord";  ///< cord or generic
+  PlanParams params;             ///< as planned; params.quality.contact is the ContactModel
+  double palm_width_m = 0.0;     ///< palm width of the hand (cord exploration) [m]
+  std::optional<CordParams> cord;  ///< cord planner: exploration as run (seed, time limit)
   PlanStats stats;
   std::vector<Grasp> grasps;
 };
@@ -50,7 +56,7 @@ nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand);
 void write_plan_file(const std::string& path, const PlanDocument& plan, const HandModel& hand);
 
 /// Parses plan.json text from `path`. @throws InputError naming the file (missing, not JSON,
-/// not a cordgrasp plan, unsupported format_version).
+/// not a cordgrasp plan, unsupported format_version: version 1 files are refused).
 nlohmann::json read_plan_json(const std::string& path);
 
 /// Hand description path recorded in a plan (to load the hand before plan_from_json).
@@ -59,8 +65,11 @@ std::string plan_hand_path(const nlohmann::json& plan);
 /// Object mesh path recorded in a plan.
 std::string plan_object_path(const nlohmann::json& plan);
 
-/// Decodes a plan for `hand`. @throws InputError when the plan was made for another hand
-/// (name differs) or names a joint or link the hand does not have.
-PlanDocument plan_from_json(const nlohmann::json& plan, const HandModel& hand);
+/// Decodes a plan for `hand`; `source` (the file name) starts error messages. @throws
+/// InputError when the plan was made for another hand (name differs), names a joint or link
+/// the hand does not have, or its parameters miss a key ("plan.json: parameters.seed:
+/// missing"), hold an unknown one or a wrong type.
+PlanDocument plan_from_json(const nlohmann::json& plan, const HandModel& hand,
+                            const std::string& source = "plan");
 
 }  // namespace cordgrasp

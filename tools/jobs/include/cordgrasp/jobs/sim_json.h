@@ -1,11 +1,12 @@
 #pragma once
 // sim.json: what `cordgrasp validate` and `run` write (a SimDocument, validate_plan.h).
 //
-// Layout (format_version 1), meters, radians, seconds, kilograms:
-//   format: "cordgrasp-sim", format_version: 1, cordgrasp_version, backend (Bullet version)
+// Layout (format_version 2), meters, radians, seconds, kilograms:
+//   format: "cordgrasp-sim", format_version: 2, cordgrasp_version, backend (Bullet version)
 //   inputs: {plan, hand: {name, path}, object: {path, name, units, triangles}, plan_seed}
-//   parameters: {tests, mu, soft_finger_radius_m, time_step_s, solver_iterations, erp, ... every
-//                SimParams field (sim_params_to_json)}
+//   parameters: {tests, every SimParams field through its Serialize visitor (sim_params_to_json:
+//                contact{mu, cone_edges, soft_finger_radius_m}, time_step_s, ...,
+//                decomposition{..}, ...)}
 //   object: {shape, parts, mass_kg, volume_m3, closed, com_m, principal_inertia_kgm2,
 //            decomposition_s}
 //   grasps: [{index (in the plan), outcome, failed_phase (null when held), detail, epsilon,
@@ -34,7 +35,7 @@
 
 namespace cordgrasp {
 
-/// Every SimParams field as JSON (units in the names).
+/// Every SimParams field as JSON (units in the names), nested structs as objects.
 nlohmann::json sim_params_to_json(const SimParams& params);
 
 /// One SimResult as JSON (joint names from `hand`).

@@ -1,11 +1,11 @@
-// Bullet HandObjectCollider against analytic distances on primitives.
+// Bullet HandObjectCollider (cordgrasp::collision) against analytic distances on primitives.
 #include <gtest/gtest.h>
 
 #include <random>
 
+#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/shapes.h"
-#include "cordgrasp/sim/bullet_hand_collider.h"
 #include "test_hands.h"
 
 namespace cordgrasp {

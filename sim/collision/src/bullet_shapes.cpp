@@ -153,30 +153,4 @@ LinkShape make_links_shape(const std::vector<const Link*>& links,
   return out;
 }
 
-std::unique_ptr<ObjectMeshShape> make_object_mesh_shape(const Mesh& mesh,
-                                                        const ShapeParams& params) {
-  auto out = std::make_unique<ObjectMeshShape>();
-  out->vertices.reserve(mesh.vertices.size() * 3);
-  for (const auto& v : mesh.vertices)
-    out->vertices.insert(out->vertices.end(), {v.x(), v.y(), v.z()});
-  for (const Eigen::Vector3i& t : mesh.triangles) {
-    const Eigen::Vector3d& a = mesh.vertices[t[0]];
-    const Eigen::Vector3d& b = mesh.vertices[t[1]];
-    const Eigen::Vector3d& c = mesh.vertices[t[2]];
-    if ((b - a).cross(c - a).squaredNorm() <= 0.0) {
-      ++out->dropped_triangles;
-      continue;
-    }
-    out->indices.insert(out->indices.end(), {t[0], t[1], t[2]});
-  }
-  if (out->indices.empty()) return out;
-  out->mesh_interface = std::make_unique<btTriangleIndexVertexArray>(
-      static_cast<int>(out->indices.size() / 3), out->indices.data(), 3 * sizeof(int),
-      static_cast<int>(mesh.vertices.size()), out->vertices.data(), 3 * sizeof(btScalar));
-  out->shape = std::make_unique<btBvhTriangleMeshShape>(out->mesh_interface.get(),
-                                                        /*useQuantizedAabbCompression=*/true);
-  out->shape->setMargin(params.object_margin_m);
-  return out;
-}
-
 }  // namespace cordgrasp::bullet

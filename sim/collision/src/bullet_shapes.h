@@ -1,25 +1,23 @@
 #pragma once
-// sim-internal: HandModel / Mesh geometry → Bullet collision shapes. One construction shared by
-// the planner's collider (bullet_hand_collider.cpp) and the physics model, so planning and
-// physics see the very same geometry. Bullet types stay out of public headers.
+// Internal to cordgrasp::collision and cordgrasp::sim (target cordgrasp_collision_internal):
+// HandModel geometry → Bullet collision shapes. One construction shared by the planner's
+// collider (bullet_hand_collider.cpp) and the physics model, so planning and physics see the
+// very same geometry. Bullet types stay out of public headers.
 #include <btBulletCollisionCommon.h>
 
 #include <memory>
 #include <vector>
 
 #include "cordgrasp/core/hand_model.h"
-#include "cordgrasp/core/mesh.h"
 
 namespace cordgrasp::bullet {
 
-/// Collision margins. Bullet's 4 cm default is far too large at hand scale.
+/// Shape construction parameters. Bullet's 4 cm default margin is far too large at hand scale.
 struct ShapeParams {
   /// Margin of link shapes [m]. Hulls are shrunk by it first (btConvexHullComputer), boxes and
   /// cylinders keep it inside their extents, spheres are all margin: the margin-inflated shape
   /// matches the authored geometry up to rounded hull edges of this radius.
   double link_margin_m = 0.5e-3;
-  /// Margin of the object's triangles [m]; it inflates the object surface (0 = exact).
-  double object_margin_m = 0.0;
 };
 
 inline btVector3 to_bt(const Eigen::Vector3d& v) { return btVector3(v.x(), v.y(), v.z()); }
@@ -56,19 +54,5 @@ LinkShape make_links_shape(const std::vector<const Link*>& links,
 /// the shape, so hull + margin ≈ the points' hull. nullptr for < 4 points or a flat hull.
 std::unique_ptr<btConvexHullShape> make_convex_hull_shape(
     const std::vector<Eigen::Vector3d>& points, double margin_m);
-
-/// The object as a static concave triangle mesh (btBvhTriangleMeshShape over a copy of the
-/// soup; zero-area triangles dropped). Owns the vertex/index arrays Bullet points into.
-struct ObjectMeshShape {
-  std::vector<btScalar> vertices;  ///< xyz triples [m]
-  std::vector<int> indices;        ///< triangle index triples
-  std::unique_ptr<btTriangleIndexVertexArray> mesh_interface;
-  std::unique_ptr<btBvhTriangleMeshShape> shape;  ///< nullptr when no triangle is usable
-  int dropped_triangles = 0;                      ///< degenerate triangles left out
-};
-
-/// Builds the object's BVH triangle-mesh shape (object frame = mesh frame).
-std::unique_ptr<ObjectMeshShape> make_object_mesh_shape(const Mesh& mesh,
-                                                        const ShapeParams& params = {});
 
 }  // namespace cordgrasp::bullet

@@ -1,4 +1,4 @@
-#include "cordgrasp/sim/bullet_hand_collider.h"
+#include "cordgrasp/collision/bullet_hand_collider.h"
 
 #include <BulletCollision/CollisionShapes/btTriangleShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
@@ -8,11 +8,13 @@
 #include <LinearMath/btConvexHullComputer.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "bullet_shapes.h"
+#include "cordgrasp/core/mesh_bvh.h"
 
 namespace cordgrasp {
 
@@ -108,25 +110,39 @@ double point_triangle_distance2(const btVector3& p, const btVector3& a, const bt
   return (p - (a + ab * (vb * denom) + ac * (vc * denom))).length2();
 }
 
-// Bounding-volume hierarchy over the object's triangles (median split, ≤ 4 per leaf), traversed
-// with the oriented box of a link child: Bullet's own BVH only offers world-AABB queries, and
-// a rotated phalanx's world AABB takes in far more triangles than the phalanx itself.
-class TriangleBvh {
+// The object's triangles for the queries: core's BVH (build_mesh_bvh, median split, <= 4 per
+// leaf, corner-sum order: the planner's contacts keep their witnesses) over the non-degenerate
+// triangles, traversed with the oriented box of a link child:
+// Bullet's own BVH only offers world-AABB queries, and a rotated phalanx's world AABB takes in
+// far more triangles than the phalanx itself.
+class ObjectTriangles {
  public:
-  explicit TriangleBvh(const bullet::ObjectMeshShape& mesh) {
-    const int n = static_cast<int>(mesh.indices.size() / 3);
-    corners_.resize(static_cast<size_t>(3 * n));
-    for (int t = 0; t < n; ++t)
-      for (int k = 0; k < 3; ++k) {
-        const int v = mesh.indices[static_cast<size_t>(3 * t + k)];
-        corners_[static_cast<size_t>(3 * t + k)] =
-            btVector3(mesh.vertices[static_cast<size_t>(3 * v)],
-                      mesh.vertices[static_cast<size_t>(3 * v + 1)],
-                      mesh.vertices[static_cast<size_t>(3 * v + 2)]);
-      }
-    order_.resize(static_cast<size_t>(n));
-    for (int t = 0; t < n; ++t) order_[static_cast<size_t>(t)] = t;
-    if (n > 0) build(0, n);
+  explicit ObjectTriangles(const Mesh& object) {
+    Mesh usable;
+    usable.name = object.name;
+    usable.vertices = object.vertices;
+    usable.triangles.reserve(object.triangles.size());
+    for (const Eigen::Vector3i& t : object.triangles) {
+      const Eigen::Vector3d& a = object.vertices[t[0]];
+      const Eigen::Vector3d& b = object.vertices[t[1]];
+      const Eigen::Vector3d& c = object.vertices[t[2]];
+      if (!((b - a).cross(c - a).squaredNorm() <= 0.0)) usable.triangles.push_back(t);
+    }
+    bvh_ = build_mesh_bvh(usable, kLeafTriangles, MeshBvhSplit::kCornerSum);
+    corners_.reserve(3 * bvh_.triangles.size());
+    for (const Eigen::Vector3i& t : bvh_.triangles)
+      for (int k = 0; k < 3; ++k) corners_.push_back(to_bt(bvh_.vertices[t[k]]));
+  }
+
+  bool empty() const { return bvh_.nodes.empty(); }
+
+  /// Bounds of the usable triangles' corners, widened by `margin_m` (as Bullet's triangle-mesh
+  /// shape computes its AABB: centre ± (half extent + margin)). Requires !empty().
+  Aabb3 aabb(double margin_m) const {
+    const MeshBvh::Node& root = bvh_.nodes.front();
+    const btVector3 center = to_bt(root.center);
+    const btVector3 half = to_bt(root.half) + btVector3(margin_m, margin_m, margin_m);
+    return {center - half, center + half};
   }
 
   /// Calls f(a, b, c) (object frame corners) for triangles that may lie within `pad` of the
@@ -134,23 +150,24 @@ class TriangleBvh {
   template <class F>
   void query(const btTransform& X_OC, const btVector3& lo, const btVector3& hi,
              const btVector3& w_lo, const btVector3& w_hi, double pad, F&& f) const {
-    if (nodes_.empty()) return;
+    if (bvh_.nodes.empty()) return;
     const btTransform X_CO = X_OC.inverse();
     const btMatrix3x3& R = X_CO.getBasis();
     const btMatrix3x3 R_abs = R.absolute();
     const btVector3 vpad(pad, pad, pad);
     const btVector3 qlo = w_lo - vpad, qhi = w_hi + vpad;
     const btVector3 llo = lo - vpad, lhi = hi + vpad;
-    int stack[64];
+    int stack[kStackSize];
     int top = 0;
     stack[top++] = 0;
     while (top > 0) {
-      const Node& node = nodes_[static_cast<size_t>(stack[--top])];
+      const int index = stack[--top];
+      const MeshBvh::Node& node = bvh_.nodes[static_cast<size_t>(index)];
       if (node.lo.x() > qhi.x() || node.hi.x() < qlo.x() || node.lo.y() > qhi.y() ||
           node.hi.y() < qlo.y() || node.lo.z() > qhi.z() || node.hi.z() < qlo.z())
         continue;
-      const btVector3 c = X_CO * (0.5 * (node.lo + node.hi));
-      const btVector3 h = 0.5 * (node.hi - node.lo);
+      const btVector3 c = X_CO * to_bt(node.center);
+      const btVector3 h = to_bt(node.half);
       bool separated = false;
       for (int i = 0; i < 3 && !separated; ++i) {
         const double r = R_abs[i].dot(h);
@@ -159,69 +176,23 @@ class TriangleBvh {
       if (separated) continue;
       if (node.count > 0) {
         for (int k = node.first; k < node.first + node.count; ++k) {
-          const size_t t = static_cast<size_t>(order_[static_cast<size_t>(k)]);
+          const size_t t = static_cast<size_t>(k);
           if (f(corners_[3 * t], corners_[3 * t + 1], corners_[3 * t + 2])) return;
         }
       } else {
-        // Median splits keep the depth ≤ log2(triangles) + 1, far below the stack size.
-        stack[top++] = node.first;     // right child
-        stack[top++] = node.self + 1;  // left child
+        // Median splits keep the depth <= log2(triangles) + 1, far below the stack size.
+        assert(top + 2 <= kStackSize);
+        stack[top++] = node.first;  // right child
+        stack[top++] = index + 1;   // left child
       }
     }
   }
 
  private:
-  struct Node {
-    btVector3 lo, hi;
-    int first = 0;  // leaf: first index into order_; inner: index of the right child
-    int count = 0;  // leaf: triangle count; 0: inner node whose left child is the next node
-    int self = 0;
-  };
-
-  int build(int begin, int end) {
-    const int index = static_cast<int>(nodes_.size());
-    nodes_.push_back(Node{});
-    btVector3 lo(1e300, 1e300, 1e300), hi(-1e300, -1e300, -1e300);
-    btVector3 clo = lo, chi = hi;
-    for (int k = begin; k < end; ++k) {
-      const size_t t = static_cast<size_t>(order_[static_cast<size_t>(k)]);
-      btVector3 centroid(0, 0, 0);
-      for (int j = 0; j < 3; ++j) {
-        lo.setMin(corners_[3 * t + j]);
-        hi.setMax(corners_[3 * t + j]);
-        centroid += corners_[3 * t + j];
-      }
-      centroid /= 3.0;
-      clo.setMin(centroid);
-      chi.setMax(centroid);
-    }
-    nodes_[static_cast<size_t>(index)].lo = lo;
-    nodes_[static_cast<size_t>(index)].hi = hi;
-    nodes_[static_cast<size_t>(index)].self = index;
-    if (end - begin <= kLeafTriangles) {
-      nodes_[static_cast<size_t>(index)].first = begin;
-      nodes_[static_cast<size_t>(index)].count = end - begin;
-      return index;
-    }
-    const int axis = (chi - clo).maxAxis();
-    const int mid = (begin + end) / 2;
-    auto centroid_on_axis = [&](int t) {
-      const size_t u = static_cast<size_t>(t);
-      return corners_[3 * u][axis] + corners_[3 * u + 1][axis] + corners_[3 * u + 2][axis];
-    };
-    std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
-                     [&](int a, int b) { return centroid_on_axis(a) < centroid_on_axis(b); });
-    build(begin, mid);
-    const int right = build(mid, end);
-    nodes_[static_cast<size_t>(index)].first = right;
-    nodes_[static_cast<size_t>(index)].count = 0;
-    return index;
-  }
-
   static constexpr int kLeafTriangles = 4;
-  std::vector<btVector3> corners_;  // 3 per triangle, object frame
-  std::vector<int> order_;
-  std::vector<Node> nodes_;
+  static constexpr int kStackSize = 64;
+  MeshBvh bvh_;
+  std::vector<btVector3> corners_;  // 3 per triangle in the BVH's leaf order, object frame
 };
 
 // Closest points (or first penetration) of one convex child against the object's triangles.
@@ -309,17 +280,13 @@ class BulletHandCollider final : public HandObjectCollider {
                      const BulletColliderParams& params) {
     bullet::ShapeParams sp;
     sp.link_margin_m = params.link_margin_m;
-    sp.object_margin_m = params.object_margin_m;
-    object_ = bullet::make_object_mesh_shape(object, sp);
-    if (!object_->shape)
+    triangles_ = std::make_unique<ObjectTriangles>(object);
+    if (triangles_->empty())
       throw std::invalid_argument("make_bullet_hand_collider: mesh '" + object.name +
                                   "' has no non-degenerate triangle");
-    btVector3 lo, hi;
+    object_aabb_ = triangles_->aabb(params.object_margin_m);
     btTransform identity;
     identity.setIdentity();
-    object_->shape->getAabb(identity, lo, hi);
-    object_aabb_ = {lo, hi};
-    bvh_ = std::make_unique<TriangleBvh>(*object_);
     object_center_ = btVector3(0, 0, 0);
     for (const auto& v : object.vertices) object_center_ += bullet::to_bt(v);
     object_center_ /= static_cast<double>(object.vertices.size());
@@ -370,8 +337,8 @@ class BulletHandCollider final : public HandObjectCollider {
     for (size_t c = 0; c < s.children.size(); ++c) {
       const btTransform X_OC = child_pose(link, c);
       TriangleQuery q(s.children[c].get(), cullers_[link][c], X_OC, kCertifyDistance_m, true);
-      bvh_->query(X_OC, cullers_[link][c].lo, cullers_[link][c].hi, child_aabb_[link][c].lo,
-                  child_aabb_[link][c].hi, kCertifyDistance_m, q);
+      triangles_->query(X_OC, cullers_[link][c].lo, cullers_[link][c].hi, child_aabb_[link][c].lo,
+                        child_aabb_[link][c].hi, kCertifyDistance_m, q);
       if (!q.found()) continue;
       if (q.best().m_distance < 0.0) {
         cert = Certificate{};
@@ -459,8 +426,8 @@ class BulletHandCollider final : public HandObjectCollider {
       if (!box.overlaps(object_aabb_)) continue;
       const btTransform X_OC = child_pose(link, c);
       TriangleQuery q(s.children[c].get(), cullers_[link][c], X_OC, max_distance_m, false);
-      bvh_->query(X_OC, cullers_[link][c].lo, cullers_[link][c].hi, child_aabb_[link][c].lo,
-                  child_aabb_[link][c].hi, max_distance_m, q);
+      triangles_->query(X_OC, cullers_[link][c].lo, cullers_[link][c].hi, child_aabb_[link][c].lo,
+                        child_aabb_[link][c].hi, max_distance_m, q);
       if (q.found() && (!found || q.best().m_distance < best.m_distance)) {
         best = q.best();
         found = true;
@@ -543,8 +510,7 @@ class BulletHandCollider final : public HandObjectCollider {
     link_aabb_[link] = all;
   }
 
-  std::unique_ptr<bullet::ObjectMeshShape> object_;
-  std::unique_ptr<TriangleBvh> bvh_;
+  std::unique_ptr<ObjectTriangles> triangles_;
   Aabb3 object_aabb_;
   btVector3 object_center_{0, 0, 0};  // vertex mean
   double object_radius_ = 0.0;        // max vertex distance from it

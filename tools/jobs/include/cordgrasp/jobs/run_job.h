@@ -1,0 +1,41 @@
+#pragma once
+// The main job: plan → validate in physics → render → report.md, into one output folder.
+#include <functional>
+#include <string>
+
+#include "cordgrasp/jobs/plan_job.h"
+#include "cordgrasp/jobs/render_options.h"
+#include "cordgrasp/jobs/run_report.h"
+#include "cordgrasp/jobs/sim_json.h"
+
+namespace cordgrasp {
+
+/// Inputs and settings of run_job().
+struct RunParams {
+  std::string hand;            ///< hand description file or shipped hand name
+  std::string object;          ///< object mesh file or shipped object name
+  PlanJobParams job;           ///< planner settings (grasps = 3 on the command line)
+  std::string tests = "lift,shake";  ///< physics tests (lift, shake, gravity6) or "none"
+  PictureOptions picture;      ///< size of the pictures (view: iso)
+  bool render = true;          ///< write PNGs (planned grasps, physics frames, contact sheet)
+  std::string out_dir;         ///< output folder, created if missing
+};
+
+/// What run_job() wrote.
+struct RunOutcome {
+  RunReport report;            ///< report.plan holds the plan; report.sim is cleared
+  SimDocument sim;             ///< empty when tests == "none"
+  std::string plan_path, sim_path, report_path;  ///< files written ("" when not written)
+  int held = 0;                ///< grasps held through the tests
+};
+
+/// One progress line ("plan: 3 force-closure grasp(s), 41 attempts").
+using RunProgress = std::function<void(const std::string&)>;
+
+/// Runs the whole job and writes plan.json, sim.json, report.md and PNGs to p.out_dir.
+/// Physics sees the plan as written to plan.json, so `cordgrasp validate --plan` reproduces
+/// its outcomes. @throws InputError for bad inputs (before any work), std::runtime_error when
+/// no force-closure grasp was found (plan.json and report.md are written first).
+RunOutcome run_job(const RunParams& p, const RunProgress& progress = {});
+
+}  // namespace cordgrasp

@@ -1,0 +1,62 @@
+#pragma once
+// `cordgrasp validate` as a job: read plan.json, check its grasps in physics (with trials,
+// snapshots and a trace), write sim.json.
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "cordgrasp/core/grasp_perturbation.h"
+#include "cordgrasp/jobs/validate_plan.h"
+#include "cordgrasp/sim/sim_params.h"
+
+namespace cordgrasp {
+
+/// Inputs and settings of validate_job(); unset optionals keep the SimParams defaults (μ and
+/// the soft-finger radius: the plan's).
+struct ValidateJobParams {
+  std::string plan;
+  std::string hand;
+  std::string object;
+  std::string units;
+  std::string tests = "lift,shake,gravity6";
+  Protocol protocol = Protocol::kQuick;  ///< preset applied before the options below
+  std::optional<double> mu;
+  std::optional<double> mass_kg;
+  std::optional<double> density_kgm3;
+  std::string object_shape = "auto";
+  std::string cache_dir;
+  std::optional<double> time_step_s;
+  std::optional<int> solver_iterations;
+  std::optional<double> contact_stiffness_Npm;
+  std::optional<double> contact_damping_Nspm;
+  std::optional<double> concavity;
+  std::optional<double> squeeze_rad;
+  std::string squeeze_direction;
+  std::optional<double> effort_scale;
+  std::optional<int> hacd_triangles;
+  std::optional<int> hull_vertices;
+  bool warmstart = false;
+  int grasps = -1;
+  int trials = 1;
+  PerturbationParams perturbation;
+  std::uint64_t seed = 1;
+  std::string snapshots_dir;
+  std::string trace_path;
+  double trace_interval_s = 0.01;
+  std::string out;
+};
+
+/// Called with one line per validated grasp ("grasp 0: held (...)"), and with
+/// (done, total) for progress.
+struct ValidateJobCallbacks {
+  std::function<void(const std::string&)> grasp_line;
+  std::function<void(const std::string& stage, int done, int total)> progress;
+};
+
+/// Validates the plan p.plan as the options say and writes sim.json to p.out (and the trace
+/// and snapshots when asked). Output folders are checked before any simulation.
+/// @throws InputError naming the file or option.
+SimDocument validate_job(const ValidateJobParams& p, const ValidateJobCallbacks& callbacks = {});
+
+}  // namespace cordgrasp

@@ -1,0 +1,148 @@
+#include "cordgrasp/jobs/validate_job.h"
+
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+#include "cordgrasp/core/atomic_file.h"
+#include "cordgrasp/core/error.h"
+#include "cordgrasp/core/hand_io.h"
+#include "cordgrasp/core/mesh_io.h"
+#include "cordgrasp/jobs/hand_scene.h"
+#include "cordgrasp/jobs/plan_job.h"
+#include "cordgrasp/jobs/plan_json.h"
+#include "cordgrasp/jobs/render_options.h"
+#include "cordgrasp/jobs/sim_json.h"
+#include "cordgrasp/jobs/text_format.h"
+#include "cordgrasp/render/renderer.h"
+#include "cordgrasp/sim/convex_decomposition.h"
+
+namespace cordgrasp {
+namespace {
+
+std::string canonical(const std::string& path) {
+  std::error_code ec;
+  const auto p = std::filesystem::weakly_canonical(path, ec);
+  return ec ? path : p.string();
+}
+
+}  // namespace
+
+SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallbacks& cb) {
+  // Output folders are checked before minutes of simulation, not after.
+  check_output_file(opt.out);
+  if (!opt.trace_path.empty()) check_output_file(opt.trace_path);
+  const nlohmann::json plan_json = read_plan_json(opt.plan);
+  // Hand: the plan's, or the one given (which must be the plan's).
+  const std::string hand_path = opt.hand.empty() ? plan_hand_path(plan_json) : opt.hand;
+  const HandModel hand = load_hand(hand_path);
+  const PlanDocument plan = plan_from_json(plan_json, hand, opt.plan);  // throws for another hand
+
+  // Object: the plan's, or the one given (which must be the plan's geometry).
+  MeshLoadOptions mesh_opt;
+  mesh_opt.units = parse_length_units(opt.units.empty() ? plan.object_units : opt.units);
+  Mesh mesh;
+  if (opt.object.empty()) {
+    mesh = load_mesh(plan.object_path, mesh_opt);
+  } else {
+    mesh = load_mesh(opt.object, mesh_opt);
+    if (canonical(opt.object) != canonical(plan.object_path)) {
+      bool same = false;
+      if (std::filesystem::exists(plan.object_path))
+        same = mesh_hash(load_mesh(plan.object_path, mesh_opt)) == mesh_hash(mesh);
+      else
+        same = plan.object_triangles == static_cast<int>(mesh.triangles.size());
+      if (!same)
+        throw InputError("validate: '" + opt.plan + "' was planned for object '" +
+                         plan.object_path + "', not '" + opt.object + "'");
+    }
+  }
+
+  SimParams params = sim_params_for(opt.protocol);  // the options below override it
+  // μ: one value shared with the planner: the plan's unless --mu overrides it.
+  params.contact = plan_contact_model(plan);
+  if (opt.mu) params.contact.mu = *opt.mu;
+  if (opt.mass_kg) params.mass_kg = *opt.mass_kg;
+  if (opt.density_kgm3) params.density_kgm3 = *opt.density_kgm3;
+  params.object_shape = parse_object_shape(opt.object_shape);
+  params.decomposition_cache_dir = opt.cache_dir;
+  if (opt.time_step_s) params.time_step_s = *opt.time_step_s;
+  if (opt.solver_iterations) params.solver_iterations = *opt.solver_iterations;
+  if (opt.contact_stiffness_Npm) params.contact_stiffness_Npm = *opt.contact_stiffness_Npm;
+  if (opt.contact_damping_Nspm) params.contact_damping_Nspm = *opt.contact_damping_Nspm;
+  if (opt.squeeze_rad) params.squeeze_rad = *opt.squeeze_rad;
+  if (!opt.squeeze_direction.empty())
+    params.squeeze_direction = parse_squeeze_direction(opt.squeeze_direction);
+  if (opt.effort_scale) params.effort_scale = *opt.effort_scale;
+  if (opt.concavity) params.decomposition.concavity = *opt.concavity;
+  if (opt.hacd_triangles) params.decomposition.max_input_triangles = *opt.hacd_triangles;
+  if (opt.hull_vertices) params.decomposition.max_hull_vertices = *opt.hull_vertices;
+  if (opt.warmstart) params.articulated_warmstarting = true;
+  const SimTests tests = sim_tests_from_string(opt.tests);
+
+  // --snapshots: the world at the end of every phase (not of shake / gravity6 segments).
+  const auto object = std::make_shared<const Mesh>(mesh);
+  std::vector<SnapshotFrame> frames;
+  std::unique_ptr<Renderer> renderer;
+  if (!opt.snapshots_dir.empty()) {
+    if (!std::filesystem::is_directory(opt.snapshots_dir))
+      throw InputError("validate: --snapshots '" + opt.snapshots_dir + "' is not a directory");
+    renderer = std::make_unique<Renderer>();
+  }
+  // --trace: the object in the hand every trace_interval_s and at every phase end, as CSV.
+  std::ostringstream trace;
+  if (!opt.trace_path.empty()) {
+    params.trace_interval_s = opt.trace_interval_s;
+    trace << "grasp,phase,phase_end,sim_time_s,object_shift_m,object_turn_rad,contacts\n";
+  }
+  const auto hooks = [&](int k) -> PhaseHook {
+    if (!renderer && opt.trace_path.empty()) return {};
+    return [&, k](const PhaseSnapshot& s) {
+      if (!opt.trace_path.empty())
+        trace << k << ',' << s.phase << ',' << (s.phase_end ? 1 : 0) << ','
+              << format_number(s.sim_time_s) << ',' << format_number(s.object_shift_m) << ','
+              << format_number(s.object_turn_rad) << ',' << s.contact_count << '\n';
+      // Pictures at phase ends only, not of trace samples or segments (e.g. "shake x").
+      if (!renderer || !s.phase_end || s.phase.find(' ') != std::string::npos) return;
+      frames.push_back({s.X_WL, s.X_WO, "", s.phase});
+    };
+  };
+  SimDocument doc = validate_plan(
+      plan, hand, mesh, params, tests, opt.grasps,
+      [&](int done, int total, const SimResult& r) {
+        if (cb.grasp_line)
+          cb.grasp_line("grasp " + std::to_string(done - 1) + ": " + sim_result_line(r));
+        if (renderer) {
+          for (SnapshotFrame& f : frames) {
+            const PhaseResult* p = r.phase(f.name);
+            f.caption = plan.object_name + " · " + hand.name + " · grasp " +
+                        std::to_string(done - 1) + " · after " + f.name +
+                        (p ? std::string(" · ") + to_string(p->outcome) : std::string());
+          }
+          RenderParams picture;
+          picture.width_px = 800;
+          picture.height_px = 600;
+          write_snapshots(*renderer, hand, object, frames, opt.snapshots_dir,
+                          "grasp_" + std::to_string(done - 1), picture);
+          frames.clear();
+        }
+        if (cb.progress) cb.progress("grasps", done, total);
+      },
+      hooks);
+  if (opt.trials > 1)
+    add_perturbed_trials(doc, plan, hand, mesh, opt.trials, opt.perturbation, opt.seed,
+                         [&](int done, int total, const SimResult&) {
+                           if (cb.grasp_line)
+                             cb.grasp_line("grasp " + std::to_string(done - 1) + ": " +
+                                           trials_line(doc.trial_outcomes[static_cast<size_t>(
+                                               done - 1)]));
+                           if (cb.progress) cb.progress("trials of grasps", done, total);
+                         });
+  doc.plan_path = canonical(opt.plan);
+  doc.object_path = opt.object.empty() ? plan.object_path : canonical(opt.object);
+  if (!opt.trace_path.empty()) write_file_atomically(opt.trace_path, trace.str());
+  write_sim_file(opt.out, doc, hand);
+  return doc;
+}
+
+}  // namespace cordgrasp
