@@ -86,6 +86,8 @@ void add_bench_command(CLI::App& app) {
                   "Physics tests on each attempt's first grasp: lift,shake,gravity6 subset, or "
                   "none")
       ->capture_default_str();
+  add_enum_option(cmd, "--protocol", &opt->bench.protocol,
+                  "Physics protocol: quick, or thorough (long phases, no early exits)");
   cmd->add_option("--cache-dir", opt->bench.cache_dir,
                   "Directory caching convex decompositions on disk (by mesh hash)");
   cmd->add_option("--jobs,-j", opt->bench.jobs, "Attempts run in parallel threads")

@@ -34,6 +34,8 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--tests", opt->run.tests,
                   "Physics tests: any of lift,shake,gravity6, or none")
       ->capture_default_str();
+  add_enum_option(cmd, "--protocol", &opt->run.protocol,
+                  "Physics protocol: quick, or thorough (long phases, no early exits)");
   cmd->add_option("--size", opt->run.picture.size, "Picture size WxH [px]")
       ->capture_default_str();
   cmd->add_flag("--no-render", opt->no_render, "No pictures");

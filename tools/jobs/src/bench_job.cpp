@@ -459,7 +459,7 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
     row.region_rank = g.region_rank;
     result.first_grasp = g;
     if (params.tests == "none") return result;
-    SimParams sim;
+    SimParams sim = sim_params_for(params.protocol);
     sim.contact = plan_contact_model(plan);  // one friction model for planner and physics
     sim.decomposition_cache_dir = params.sim_cache_dir;
     const SimDocument doc =
@@ -522,7 +522,8 @@ nlohmann::json bench_params_to_json(const BenchParams& p) {
           {"repeats", p.repeats},
           {"seed", p.seed},
           {"job", job},
-          {"tests", p.tests}};
+          {"tests", p.tests},
+          {"protocol", to_string(p.protocol)}};
 }
 
 std::vector<BenchRow> merge_bench_rows(const std::vector<std::vector<BenchRow>>& parts) {

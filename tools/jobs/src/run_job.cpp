@@ -86,7 +86,7 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   SimDocument& sim = out.sim;
   std::vector<std::vector<SnapshotFrame>> frames(static_cast<size_t>(n));
   if (physics) {
-    SimParams params;
+    SimParams params = sim_params_for(opt.protocol);
     params.contact = plan_contact_model(written);  // one friction model for planner and physics
     t = Clock::now();
     const auto hooks = [&](int k) -> PhaseHook {

@@ -19,6 +19,7 @@
 #include "cordgrasp/core/hand_model.h"
 #include "cordgrasp/core/mesh.h"
 #include "cordgrasp/jobs/plan_job.h"
+#include "cordgrasp/sim/sim_params.h"
 
 namespace cordgrasp {
 
@@ -31,6 +32,7 @@ struct BenchParams {
   std::uint64_t seed = 1;             ///< seed of repeat 0 (repeat r: seed + r)
   PlanJobParams job;                  ///< planner options (planner and seed set per attempt)
   std::string tests = "lift,shake";   ///< physics tests on each attempt's first grasp; "none"
+  Protocol protocol = Protocol::kQuick;  ///< physics protocol preset
   std::string sim_cache_dir;          ///< on-disk convex decomposition cache ("" = memory only)
 };
 

@@ -17,6 +17,7 @@ struct BenchRunParams {
   int repeats = 1;                      ///< attempts per object, hand and planner
   PlanJobParams job;                    ///< planner settings (seed: repeat r uses seed + r)
   std::string tests = "lift,shake";     ///< physics tests on each first grasp, or "none"
+  Protocol protocol = Protocol::kQuick; ///< physics protocol preset
   std::string cache_dir;                ///< on-disk convex decomposition cache ("" = none)
   int jobs = 1;                         ///< threads
   std::string shard;                    ///< "k/N": one deterministic slice ("" = all)

@@ -7,6 +7,7 @@
 #include "cordgrasp/jobs/render_options.h"
 #include "cordgrasp/jobs/run_report.h"
 #include "cordgrasp/jobs/sim_json.h"
+#include "cordgrasp/sim/sim_params.h"
 
 namespace cordgrasp {
 
@@ -16,6 +17,7 @@ struct RunParams {
   std::string object;          ///< object mesh file or shipped object name
   PlanJobParams job;           ///< planner settings (grasps = 3 on the command line)
   std::string tests = "lift,shake";  ///< physics tests (lift, shake, gravity6) or "none"
+  Protocol protocol = Protocol::kQuick;  ///< physics protocol preset
   PictureOptions picture;      ///< size of the pictures (view: iso)
   bool render = true;          ///< write PNGs (planned grasps, physics frames, contact sheet)
   std::string out_dir;         ///< output folder, created if missing
