@@ -19,9 +19,8 @@ struct ContactModel {
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
   void Serialize(Archive* a) {
-    a->Visit(CORDGRASP_NVP(mu));
-    a->Visit(CORDGRASP_NVP(cone_edges));
-    a->Visit(CORDGRASP_NVP(soft_finger_radius_m));
+    visit_fields(a, CORDGRASP_NVP(mu), CORDGRASP_NVP(cone_edges),
+                 CORDGRASP_NVP(soft_finger_radius_m));
   }
 };
 

@@ -109,33 +109,18 @@ struct CordParams {
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
   void Serialize(Archive* a) {
-    a->Visit(CORDGRASP_NVP(r2_margin_m));
-    a->Visit(CORDGRASP_NVP(delta_r_m));
-    a->Visit(CORDGRASP_NVP(eps_len_m));
-    a->Visit(CORDGRASP_NVP(eps_area_rel));
-    a->Visit(CORDGRASP_NVP(barycentric_tol));
-    a->Visit(CORDGRASP_NVP(dedup_m));
-    a->Visit(CORDGRASP_NVP(min_grasp_gap_m));
-    a->Visit(CORDGRASP_NVP(cord_construction));
-    a->Visit(CORDGRASP_NVP(xi_min_m));
-    a->Visit(CORDGRASP_NVP(xi_max_m));
-    a->Visit(CORDGRASP_NVP(max_squeeze_angle_rad));
-    a->Visit(CORDGRASP_NVP(scan_angle_rad));
-    a->Visit(CORDGRASP_NVP(max_cords_per_side));
-    a->Visit(CORDGRASP_NVP(side_cord_policy));
-    a->Visit(CORDGRASP_NVP(sphere_sequence));
-    a->Visit(CORDGRASP_NVP(sphere_points));
-    a->Visit(CORDGRASP_NVP(max_iterations));
-    a->Visit(CORDGRASP_NVP(sets));
-    a->Visit(CORDGRASP_NVP(min_triangle_area_m2));
-    a->Visit(CORDGRASP_NVP(local_improvement));
-    a->Visit(CORDGRASP_NVP(perturbations_per_set));
-    a->Visit(CORDGRASP_NVP(perturb_max_angle_rad));
-    a->Visit(CORDGRASP_NVP(perturb_max_translation_m));
-    a->Visit(CORDGRASP_NVP(xor_backend));
-    a->Visit(CORDGRASP_NVP(clipper_scale));
-    a->Visit(CORDGRASP_NVP(seed));
-    a->Visit(CORDGRASP_NVP(time_limit_s));
+    visit_fields(a, CORDGRASP_NVP(r2_margin_m), CORDGRASP_NVP(delta_r_m), CORDGRASP_NVP(eps_len_m),
+                 CORDGRASP_NVP(eps_area_rel), CORDGRASP_NVP(barycentric_tol),
+                 CORDGRASP_NVP(dedup_m), CORDGRASP_NVP(min_grasp_gap_m),
+                 CORDGRASP_NVP(cord_construction), CORDGRASP_NVP(xi_min_m),
+                 CORDGRASP_NVP(xi_max_m), CORDGRASP_NVP(max_squeeze_angle_rad),
+                 CORDGRASP_NVP(scan_angle_rad), CORDGRASP_NVP(max_cords_per_side),
+                 CORDGRASP_NVP(side_cord_policy), CORDGRASP_NVP(sphere_sequence),
+                 CORDGRASP_NVP(sphere_points), CORDGRASP_NVP(max_iterations), CORDGRASP_NVP(sets),
+                 CORDGRASP_NVP(min_triangle_area_m2), CORDGRASP_NVP(local_improvement),
+                 CORDGRASP_NVP(perturbations_per_set), CORDGRASP_NVP(perturb_max_angle_rad),
+                 CORDGRASP_NVP(perturb_max_translation_m), CORDGRASP_NVP(xor_backend),
+                 CORDGRASP_NVP(clipper_scale), CORDGRASP_NVP(seed), CORDGRASP_NVP(time_limit_s));
   }
 };
 

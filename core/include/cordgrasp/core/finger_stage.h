@@ -39,16 +39,11 @@ struct FingerParams {
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
   void Serialize(Archive* a) {
-    a->Visit(CORDGRASP_NVP(approach_step_m));
-    a->Visit(CORDGRASP_NVP(retreat_step_m));
-    a->Visit(CORDGRASP_NVP(max_retreat_steps));
-    a->Visit(CORDGRASP_NVP(close_step));
-    a->Visit(CORDGRASP_NVP(contact_tolerance_m));
-    a->Visit(CORDGRASP_NVP(max_close_iterations));
-    a->Visit(CORDGRASP_NVP(min_contacts));
-    a->Visit(CORDGRASP_NVP(static_link_contacts));
-    a->Visit(CORDGRASP_NVP(centre_single_actor));
-    a->Visit(CORDGRASP_NVP(centre_max_gap_m));
+    visit_fields(a, CORDGRASP_NVP(approach_step_m), CORDGRASP_NVP(retreat_step_m),
+                 CORDGRASP_NVP(max_retreat_steps), CORDGRASP_NVP(close_step),
+                 CORDGRASP_NVP(contact_tolerance_m), CORDGRASP_NVP(max_close_iterations),
+                 CORDGRASP_NVP(min_contacts), CORDGRASP_NVP(static_link_contacts),
+                 CORDGRASP_NVP(centre_single_actor), CORDGRASP_NVP(centre_max_gap_m));
   }
 };
 

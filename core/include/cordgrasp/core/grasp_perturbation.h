@@ -15,8 +15,7 @@ struct PerturbationParams {
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
   void Serialize(Archive* a) {
-    a->Visit(CORDGRASP_NVP(offset_m));
-    a->Visit(CORDGRASP_NVP(turn_rad));
+    visit_fields(a, CORDGRASP_NVP(offset_m), CORDGRASP_NVP(turn_rad));
   }
 };
 

@@ -22,13 +22,9 @@ struct PlanParams {
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
   void Serialize(Archive* a) {
-    a->Visit(CORDGRASP_NVP(grasps));
-    a->Visit(CORDGRASP_NVP(time_limit_s));
-    a->Visit(CORDGRASP_NVP(seed));
-    a->Visit(CORDGRASP_NVP(finger));
-    a->Visit(CORDGRASP_NVP(quality));
-    a->Visit(CORDGRASP_NVP(roll_retry));
-    a->Visit(CORDGRASP_NVP(max_attempts));
+    visit_fields(a, CORDGRASP_NVP(grasps), CORDGRASP_NVP(time_limit_s), CORDGRASP_NVP(seed),
+                 CORDGRASP_NVP(finger), CORDGRASP_NVP(quality), CORDGRASP_NVP(roll_retry),
+                 CORDGRASP_NVP(max_attempts));
   }
 };
 

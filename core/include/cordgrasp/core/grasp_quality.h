@@ -46,13 +46,9 @@ struct QualityParams {
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
   void Serialize(Archive* a) {
-    a->Visit(CORDGRASP_NVP(contact));
-    a->Visit(CORDGRASP_NVP(min_epsilon));
-    a->Visit(CORDGRASP_NVP(mode));
-    a->Visit(CORDGRASP_NVP(simox_mu_eff));
-    a->Visit(CORDGRASP_NVP(simox_fc_tolerance));
-    a->Visit(CORDGRASP_NVP(simox_ows_faces));
-    a->Visit(CORDGRASP_NVP(seed));
+    visit_fields(a, CORDGRASP_NVP(contact), CORDGRASP_NVP(min_epsilon), CORDGRASP_NVP(mode),
+                 CORDGRASP_NVP(simox_mu_eff), CORDGRASP_NVP(simox_fc_tolerance),
+                 CORDGRASP_NVP(simox_ows_faces), CORDGRASP_NVP(seed));
   }
 };
 

@@ -1,6 +1,8 @@
 #pragma once
 // The field list of a parameter struct, written once: each struct has
-//   template <typename Archive> void Serialize(Archive* a) { a->Visit(CORDGRASP_NVP(x)); ... }
+//   template <typename Archive> void Serialize(Archive* a) {
+//     visit_fields(a, CORDGRASP_NVP(x), CORDGRASP_NVP(y), ...);
+//   }
 // visiting every field in declaration order (nested structs as one field each). Readers,
 // writers, CLI help and replays walk that list, so they cannot drift apart (the convention of
 // Drake's multibody_plant_config.h and drake/common/name_value.h).
@@ -17,6 +19,12 @@ struct NameValuePair {
 template <typename T>
 NameValuePair<T> make_nvp(const char* name, T* value) {
   return {name, value};
+}
+
+/// Hands each field to a->Visit, in the order given.
+template <typename Archive, typename... T>
+void visit_fields(Archive* a, NameValuePair<T>... fields) {
+  (a->Visit(fields), ...);
 }
 
 }  // namespace cordgrasp

@@ -29,15 +29,11 @@ struct DecompositionParams {
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
   void Serialize(Archive* a) {
-    a->Visit(CORDGRASP_NVP(concavity));
-    a->Visit(CORDGRASP_NVP(min_parts));
-    a->Visit(CORDGRASP_NVP(max_hull_vertices));
-    a->Visit(CORDGRASP_NVP(compacity_weight));
-    a->Visit(CORDGRASP_NVP(volume_weight));
-    a->Visit(CORDGRASP_NVP(connect_distance));
-    a->Visit(CORDGRASP_NVP(add_extra_distance_points));
-    a->Visit(CORDGRASP_NVP(add_face_points));
-    a->Visit(CORDGRASP_NVP(max_input_triangles));
+    visit_fields(a, CORDGRASP_NVP(concavity), CORDGRASP_NVP(min_parts),
+                 CORDGRASP_NVP(max_hull_vertices), CORDGRASP_NVP(compacity_weight),
+                 CORDGRASP_NVP(volume_weight), CORDGRASP_NVP(connect_distance),
+                 CORDGRASP_NVP(add_extra_distance_points), CORDGRASP_NVP(add_face_points),
+                 CORDGRASP_NVP(max_input_triangles));
   }
 };
 

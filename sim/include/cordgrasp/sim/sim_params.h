@@ -226,76 +226,42 @@ struct SimParams {
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
   void Serialize(Archive* a) {
-    a->Visit(CORDGRASP_NVP(contact));
-    a->Visit(CORDGRASP_NVP(link_margin_m));
-    a->Visit(CORDGRASP_NVP(object_margin_m));
-    a->Visit(CORDGRASP_NVP(time_step_s));
-    a->Visit(CORDGRASP_NVP(solver_iterations));
-    a->Visit(CORDGRASP_NVP(erp));
+    visit_fields(a, CORDGRASP_NVP(contact), CORDGRASP_NVP(link_margin_m),
+                 CORDGRASP_NVP(object_margin_m), CORDGRASP_NVP(time_step_s),
+                 CORDGRASP_NVP(solver_iterations), CORDGRASP_NVP(erp));
     a->Visit(CORDGRASP_NVP(contact_stiffness_Npm));
     a->Visit(CORDGRASP_NVP(contact_damping_Nspm));
-    a->Visit(CORDGRASP_NVP(polyhedral_contacts));
-    a->Visit(CORDGRASP_NVP(friction_erp));
-    a->Visit(CORDGRASP_NVP(cfm));
-    a->Visit(CORDGRASP_NVP(linear_slop_m));
-    a->Visit(CORDGRASP_NVP(gear_erp));
-    a->Visit(CORDGRASP_NVP(solver_residual_threshold));
-    a->Visit(CORDGRASP_NVP(cone_friction));
-    a->Visit(CORDGRASP_NVP(articulated_warmstarting));
-    a->Visit(CORDGRASP_NVP(density_kgm3));
-    a->Visit(CORDGRASP_NVP(mass_kg));
-    a->Visit(CORDGRASP_NVP(object_shape));
-    a->Visit(CORDGRASP_NVP(convex_volume_ratio));
-    a->Visit(CORDGRASP_NVP(decomposition));
-    a->Visit(CORDGRASP_NVP(decomposition_cache_dir));
-    a->Visit(CORDGRASP_NVP(close_speed));
-    a->Visit(CORDGRASP_NVP(squeeze_rad));
-    a->Visit(CORDGRASP_NVP(squeeze_m));
+    visit_fields(a, CORDGRASP_NVP(polyhedral_contacts), CORDGRASP_NVP(friction_erp),
+                 CORDGRASP_NVP(cfm), CORDGRASP_NVP(linear_slop_m), CORDGRASP_NVP(gear_erp),
+                 CORDGRASP_NVP(solver_residual_threshold), CORDGRASP_NVP(cone_friction),
+                 CORDGRASP_NVP(articulated_warmstarting), CORDGRASP_NVP(density_kgm3),
+                 CORDGRASP_NVP(mass_kg), CORDGRASP_NVP(object_shape),
+                 CORDGRASP_NVP(convex_volume_ratio), CORDGRASP_NVP(decomposition),
+                 CORDGRASP_NVP(decomposition_cache_dir), CORDGRASP_NVP(close_speed),
+                 CORDGRASP_NVP(squeeze_rad), CORDGRASP_NVP(squeeze_m));
     a->Visit(CORDGRASP_NVP(default_effort_Nm));
     a->Visit(CORDGRASP_NVP(default_effort_N));
-    a->Visit(CORDGRASP_NVP(effort_scale));
-    a->Visit(CORDGRASP_NVP(squeeze_direction));
-    a->Visit(CORDGRASP_NVP(compliant_squeeze));
-    a->Visit(CORDGRASP_NVP(servo_gain_per_s));
-    a->Visit(CORDGRASP_NVP(hold_speed));
-    a->Visit(CORDGRASP_NVP(armature_kgm2));
-    a->Visit(CORDGRASP_NVP(armature_kg));
-    a->Visit(CORDGRASP_NVP(lock_passive_joints));
-    a->Visit(CORDGRASP_NVP(hand_gravity_compensation));
-    a->Visit(CORDGRASP_NVP(base_mass_scale));
-    a->Visit(CORDGRASP_NVP(protocol));
-    a->Visit(CORDGRASP_NVP(world_frame));
-    a->Visit(CORDGRASP_NVP(gravity_mps2));
-    a->Visit(CORDGRASP_NVP(settle_time_s));
-    a->Visit(CORDGRASP_NVP(squeeze_max_time_s));
-    a->Visit(CORDGRASP_NVP(squeeze_ramp_s));
-    a->Visit(CORDGRASP_NVP(squeeze_min_time_s));
-    a->Visit(CORDGRASP_NVP(stall_speed));
-    a->Visit(CORDGRASP_NVP(stall_time_s));
-    a->Visit(CORDGRASP_NVP(lift_height_m));
-    a->Visit(CORDGRASP_NVP(lift_time_s));
-    a->Visit(CORDGRASP_NVP(lift_hold_s));
-    a->Visit(CORDGRASP_NVP(shake_amplitude_m));
-    a->Visit(CORDGRASP_NVP(shake_frequency_hz));
-    a->Visit(CORDGRASP_NVP(shake_time_s));
-    a->Visit(CORDGRASP_NVP(rock_angle_rad));
-    a->Visit(CORDGRASP_NVP(rock_frequency_hz));
-    a->Visit(CORDGRASP_NVP(rock_time_s));
-    a->Visit(CORDGRASP_NVP(gravity6_time_s));
-    a->Visit(CORDGRASP_NVP(reach_start_fraction));
-    a->Visit(CORDGRASP_NVP(reach_start_clearance_m));
-    a->Visit(CORDGRASP_NVP(rest_exit_time_s));
-    a->Visit(CORDGRASP_NVP(rest_drift_m));
-    a->Visit(CORDGRASP_NVP(rest_drift_rad));
-    a->Visit(CORDGRASP_NVP(exit_on_failure));
-    a->Visit(CORDGRASP_NVP(no_contact_exit_time_s));
-    a->Visit(CORDGRASP_NVP(held_translation_m));
-    a->Visit(CORDGRASP_NVP(held_rotation_rad));
-    a->Visit(CORDGRASP_NVP(contact_distance_m));
-    a->Visit(CORDGRASP_NVP(unstable_speed_mps));
-    a->Visit(CORDGRASP_NVP(drop_distance_m));
-    a->Visit(CORDGRASP_NVP(settle_shift_tolerance_m));
-    a->Visit(CORDGRASP_NVP(trace_interval_s));
+    visit_fields(a, CORDGRASP_NVP(effort_scale), CORDGRASP_NVP(squeeze_direction),
+                 CORDGRASP_NVP(compliant_squeeze), CORDGRASP_NVP(servo_gain_per_s),
+                 CORDGRASP_NVP(hold_speed), CORDGRASP_NVP(armature_kgm2),
+                 CORDGRASP_NVP(armature_kg), CORDGRASP_NVP(lock_passive_joints),
+                 CORDGRASP_NVP(hand_gravity_compensation), CORDGRASP_NVP(base_mass_scale),
+                 CORDGRASP_NVP(protocol), CORDGRASP_NVP(world_frame), CORDGRASP_NVP(gravity_mps2),
+                 CORDGRASP_NVP(settle_time_s), CORDGRASP_NVP(squeeze_max_time_s),
+                 CORDGRASP_NVP(squeeze_ramp_s), CORDGRASP_NVP(squeeze_min_time_s),
+                 CORDGRASP_NVP(stall_speed), CORDGRASP_NVP(stall_time_s),
+                 CORDGRASP_NVP(lift_height_m), CORDGRASP_NVP(lift_time_s),
+                 CORDGRASP_NVP(lift_hold_s), CORDGRASP_NVP(shake_amplitude_m),
+                 CORDGRASP_NVP(shake_frequency_hz), CORDGRASP_NVP(shake_time_s),
+                 CORDGRASP_NVP(rock_angle_rad), CORDGRASP_NVP(rock_frequency_hz),
+                 CORDGRASP_NVP(rock_time_s), CORDGRASP_NVP(gravity6_time_s),
+                 CORDGRASP_NVP(reach_start_fraction), CORDGRASP_NVP(reach_start_clearance_m),
+                 CORDGRASP_NVP(rest_exit_time_s), CORDGRASP_NVP(rest_drift_m),
+                 CORDGRASP_NVP(rest_drift_rad), CORDGRASP_NVP(exit_on_failure),
+                 CORDGRASP_NVP(no_contact_exit_time_s), CORDGRASP_NVP(held_translation_m),
+                 CORDGRASP_NVP(held_rotation_rad), CORDGRASP_NVP(contact_distance_m),
+                 CORDGRASP_NVP(unstable_speed_mps), CORDGRASP_NVP(drop_distance_m),
+                 CORDGRASP_NVP(settle_shift_tolerance_m), CORDGRASP_NVP(trace_interval_s));
   }
 };
 

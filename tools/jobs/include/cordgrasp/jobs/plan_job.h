@@ -32,11 +32,8 @@ struct PlanJobParams {
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
   void Serialize(Archive* a) {
-    a->Visit(CORDGRASP_NVP(planner));
-    a->Visit(CORDGRASP_NVP(plan));
-    a->Visit(CORDGRASP_NVP(cord));
-    a->Visit(CORDGRASP_NVP(soft_finger_radius_m));
-    a->Visit(CORDGRASP_NVP(units));
+    visit_fields(a, CORDGRASP_NVP(planner), CORDGRASP_NVP(plan), CORDGRASP_NVP(cord),
+                 CORDGRASP_NVP(soft_finger_radius_m), CORDGRASP_NVP(units));
   }
 };
 
