@@ -84,6 +84,11 @@ void add_validate_command(CLI::App& app) {
   cmd->add_flag("--warmstart", opt->job.warmstart,
                 "Warm-start the hand's contact impulses from the previous step (Bullet's "
                 "articulated warmstarting)");
+  cmd->add_option("--jobs,-j", opt->job.jobs,
+                  "Grasps (and trials) simulated at once, one physics world per thread; the "
+                  "results do not depend on it (--snapshots runs one at a time)")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
   cmd->add_option("--grasps", opt->job.grasps, "Validate only the first K grasps of the plan");
   cmd->add_option("--trials", opt->job.trials,
                   "Simulate each grasp N times: as planned, then with the hand moved by "

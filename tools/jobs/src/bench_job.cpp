@@ -18,6 +18,7 @@
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/jobs/sim_json.h"
 #include "cordgrasp/jobs/text_format.h"
+#include "parallel_for.h"
 #include "params_json.h"
 
 namespace cordgrasp {
@@ -488,26 +489,16 @@ std::vector<BenchResult> run_bench_attempts(const std::vector<BenchAttempt>& att
                                             const BenchParams& params, const BenchInputs& inputs,
                                             int jobs, const BenchProgress& progress) {
   std::vector<BenchResult> results(attempts.size());
-  std::atomic<size_t> next{0};
   std::mutex mutex;
   int done = 0;
   const int total = static_cast<int>(attempts.size());
-  auto worker = [&]() {
-    for (size_t i = next++; i < attempts.size(); i = next++) {
-      results[i] = run_bench_attempt(attempts[i], params, inputs);
-      const std::lock_guard<std::mutex> lock(mutex);
-      ++done;
-      if (progress) progress(done, total, results[i].row);
-    }
-  };
-  const int threads = std::max(1, std::min(jobs, total));
-  if (threads == 1) {
-    worker();
-    return results;
-  }
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-  for (std::thread& t : pool) t.join();
+  parallel_for(total, jobs, [&](int i) {
+    const size_t k = static_cast<size_t>(i);
+    results[k] = run_bench_attempt(attempts[k], params, inputs);
+    const std::lock_guard<std::mutex> lock(mutex);
+    ++done;
+    if (progress) progress(done, total, results[k].row);
+  });
   return results;
 }
 

@@ -106,7 +106,7 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
           progress("physics: grasp " + std::to_string(done) + "/" + std::to_string(total) +
                        " " + sim_result_line(r));
         },
-        hooks);
+        hooks, opt.jobs);
     sim.plan_path = fs::absolute(plan_path).lexically_normal().string();
     report.sim_wall_s = seconds_since(t);
     out.sim_path = (fs::path(opt.out_dir) / "sim.json").string();

@@ -95,13 +95,15 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
     params.trace_interval_s = opt.trace_interval_s;
     trace << "grasp,phase,phase_end,sim_time_s,object_shift_m,object_turn_rad,contacts\n";
   }
+  std::vector<std::string> trace_rows(plan.grasps.size());
   const auto hooks = [&](int k) -> PhaseHook {
     if (!renderer && opt.trace_path.empty()) return {};
     return [&, k](const PhaseSnapshot& s) {
-      if (!opt.trace_path.empty())
-        trace << k << ',' << s.phase << ',' << (s.phase_end ? 1 : 0) << ','
-              << format_number(s.sim_time_s) << ',' << format_number(s.object_shift_m) << ','
-              << format_number(s.object_turn_rad) << ',' << s.contact_count << '\n';
+      if (!opt.trace_path.empty())  // each grasp's rows apart: grasps may run on threads
+        trace_rows[static_cast<size_t>(k)] +=
+            std::to_string(k) + ',' + s.phase + ',' + (s.phase_end ? "1" : "0") + ',' +
+            format_number(s.sim_time_s) + ',' + format_number(s.object_shift_m) + ',' +
+            format_number(s.object_turn_rad) + ',' + std::to_string(s.contact_count) + '\n';
       // Pictures at phase ends only, not of trace samples or segments (e.g. "shake x").
       if (!renderer || !s.phase_end || s.phase.find(' ') != std::string::npos) return;
       frames.push_back({s.X_WL, s.X_WO, "", s.phase});
@@ -128,7 +130,7 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
         }
         if (cb.progress) cb.progress("grasps", done, total);
       },
-      hooks);
+      hooks, renderer ? 1 : opt.jobs);  // pictures are drawn on this thread, one grasp at a time
   if (opt.trials > 1)
     add_perturbed_trials(doc, plan, hand, mesh, opt.trials, opt.perturbation, opt.seed,
                          [&](int done, int total, const SimResult&) {
@@ -137,10 +139,14 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
                                            trials_line(doc.trial_outcomes[static_cast<size_t>(
                                                done - 1)]));
                            if (cb.progress) cb.progress("trials of grasps", done, total);
-                         });
+                         },
+                         opt.jobs);
   doc.plan_path = canonical(opt.plan);
   doc.object_path = opt.object.empty() ? plan.object_path : canonical(opt.object);
-  if (!opt.trace_path.empty()) write_file_atomically(opt.trace_path, trace.str());
+  if (!opt.trace_path.empty()) {
+    for (const std::string& rows : trace_rows) trace << rows;
+    write_file_atomically(opt.trace_path, trace.str());
+  }
   write_sim_file(opt.out, doc, hand);
   return doc;
 }

@@ -4,15 +4,18 @@
 #include <chrono>
 #include <cstdio>
 #include <sstream>
+#include <mutex>
 #include <stdexcept>
 
 #include "cordgrasp/jobs/text_format.h"
+#include "parallel_for.h"
 
 namespace cordgrasp {
 
 SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const Mesh& mesh,
                           const SimParams& params, const SimTests& tests, int max_grasps,
-                          const ValidateProgress& progress, const GraspPhaseHooks& hooks) {
+                          const ValidateProgress& progress, const GraspPhaseHooks& hooks,
+                          int jobs) {
   const auto start = std::chrono::steady_clock::now();
   SimDocument doc;
   doc.hand_name = plan.hand_name;
@@ -26,14 +29,21 @@ SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const
   doc.tests = tests;
   const int total = max_grasps < 0 ? static_cast<int>(plan.grasps.size())
                                    : std::min(max_grasps, static_cast<int>(plan.grasps.size()));
+  doc.results.resize(static_cast<size_t>(total));
   for (int k = 0; k < total; ++k) {
-    const Grasp& g = plan.grasps[static_cast<size_t>(k)];
-    doc.results.push_back(
-        validate_grasp(mesh, hand, g, params, tests, hooks ? hooks(k) : PhaseHook{}));
-    doc.grasps.push_back(g);
+    doc.grasps.push_back(plan.grasps[static_cast<size_t>(k)]);
     doc.grasp_indices.push_back(k);
-    if (progress) progress(k + 1, total, doc.results.back());
   }
+  // One physics world per grasp and thread: the results do not depend on `jobs`.
+  InOrderReporter reporter(total, [&](int k) {
+    if (progress) progress(k + 1, total, doc.results[static_cast<size_t>(k)]);
+  });
+  parallel_for(total, jobs, [&](int k) {
+    const Grasp& g = plan.grasps[static_cast<size_t>(k)];
+    doc.results[static_cast<size_t>(k)] =
+        validate_grasp(mesh, hand, g, params, tests, hooks ? hooks(k) : PhaseHook{});
+    reporter.finished(k);
+  });
   doc.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return doc;
@@ -41,7 +51,7 @@ SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const
 
 void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const HandModel& hand,
                           const Mesh& mesh, int trials, const PerturbationParams& perturbation,
-                          std::uint64_t seed, const ValidateProgress& progress) {
+                          std::uint64_t seed, const ValidateProgress& progress, int jobs) {
   if (trials < 1 || trials > 1000)
     throw std::invalid_argument("add_perturbed_trials: trials must be in [1, 1000], got " +
                                 std::to_string(trials));
@@ -49,18 +59,33 @@ void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const Hand
   doc.trial_perturbation = perturbation;
   doc.trial_seed = seed;
   doc.trial_outcomes.assign(doc.results.size(), {});
-  const size_t total = doc.results.size();
-  for (size_t k = 0; k < total; ++k) {
-    std::vector<Outcome>& outcomes = doc.trial_outcomes[k];
-    outcomes.push_back(doc.results[k].outcome);
-    const Grasp& planned = plan.grasps[static_cast<size_t>(doc.grasp_indices[k])];
-    for (int t = 1; t < trials; ++t) {
-      const Grasp g = perturbed_grasp(planned, perturbation, seed + 1000 * k + t);
-      outcomes.push_back(validate_grasp(mesh, hand, g, doc.params, doc.tests).outcome);
-    }
-    if (progress)
-      progress(static_cast<int>(k + 1), static_cast<int>(total), doc.results[k]);
+  const int total = static_cast<int>(doc.results.size());
+  const int per_grasp = trials - 1;  // trial 0 is doc.results[k]
+  for (int k = 0; k < total; ++k) {
+    doc.trial_outcomes[static_cast<size_t>(k)].assign(static_cast<size_t>(trials),
+                                                      doc.results[static_cast<size_t>(k)].outcome);
   }
+  // Every (grasp, trial) pair is a task of its own; a grasp is reported once all its trials are.
+  std::vector<int> trials_left(static_cast<size_t>(total), per_grasp);
+  std::mutex left_mutex;
+  InOrderReporter reporter(total, [&](int k) {
+    if (progress) progress(k + 1, total, doc.results[static_cast<size_t>(k)]);
+  });
+  if (per_grasp == 0)
+    for (int k = 0; k < total; ++k) reporter.finished(k);
+  parallel_for(total * per_grasp, jobs, [&](int task) {
+    const int k = task / per_grasp, t = 1 + task % per_grasp;
+    const Grasp& planned = plan.grasps[static_cast<size_t>(doc.grasp_indices[static_cast<size_t>(k)])];
+    const Grasp g = perturbed_grasp(planned, perturbation, seed + 1000 * k + t);
+    doc.trial_outcomes[static_cast<size_t>(k)][static_cast<size_t>(t)] =
+        validate_grasp(mesh, hand, g, doc.params, doc.tests).outcome;
+    bool grasp_done = false;
+    {
+      const std::lock_guard<std::mutex> lock(left_mutex);
+      grasp_done = --trials_left[static_cast<size_t>(k)] == 0;
+    }
+    if (grasp_done) reporter.finished(k);
+  });
   doc.wall_time_s +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

@@ -18,6 +18,7 @@ struct RunParams {
   PlanJobParams job;           ///< planner settings (grasps = 3 on the command line)
   std::string tests = "lift,shake";  ///< physics tests (lift, shake, gravity6) or "none"
   Protocol protocol = Protocol::kQuick;  ///< physics protocol preset
+  int jobs = 1;                ///< physics threads (one world each); results independent of it
   PictureOptions picture;      ///< size of the pictures (view: iso)
   bool render = true;          ///< write PNGs (planned grasps, physics frames, contact sheet)
   std::string out_dir;         ///< output folder, created if missing

@@ -39,6 +39,7 @@ struct ValidateJobParams {
   bool warmstart = false;
   int grasps = -1;
   int trials = 1;
+  int jobs = 1;  ///< threads (one physics world each); results do not depend on it
   PerturbationParams perturbation;
   std::uint64_t seed = 1;
   std::string snapshots_dir;

@@ -46,20 +46,25 @@ using ValidateProgress = std::function<void(int, int, const SimResult&)>;
 using GraspPhaseHooks = std::function<PhaseHook(int grasp_index)>;
 
 /// Validates the first `max_grasps` grasps of `plan` (all when < 0) on `mesh` with `hand`;
-/// `hooks` (optional) sees the world at every phase end of each grasp (snapshots).
+/// `hooks` (optional) sees the world at every phase end of each grasp (snapshots). `jobs`
+/// threads simulate grasps at once, each in its own world: the document does not depend on it;
+/// `progress` is called in grasp order, one call at a time, and a hook of grasp k runs on the
+/// thread simulating k (so it must only touch grasp k's state).
 SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const Mesh& mesh,
                           const SimParams& params, const SimTests& tests, int max_grasps = -1,
                           const ValidateProgress& progress = {},
-                          const GraspPhaseHooks& hooks = {});
+                          const GraspPhaseHooks& hooks = {}, int jobs = 1);
 
 /// Held / not-held of a marginal grasp is chaotic (docs/physics.md): validates every grasp of
 /// `doc` `trials` − 1 more times with the hand moved and turned slightly (perturbed_grasp,
 /// seed trial_seed + 1000·k + t for trial t of grasp k) and records all outcomes in
-/// doc.trial_outcomes; `progress` is called after each grasp's trials.
+/// doc.trial_outcomes; `progress` is called after each grasp's trials, in grasp order. `jobs`
+/// threads run the trials (results independent of it).
 /// @throws std::invalid_argument when trials is not in [1, 1000].
 void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const HandModel& hand,
                           const Mesh& mesh, int trials, const PerturbationParams& perturbation,
-                          std::uint64_t seed, const ValidateProgress& progress = {});
+                          std::uint64_t seed, const ValidateProgress& progress = {},
+                          int jobs = 1);
 
 /// How many of `outcomes` are held.
 int count_held(const std::vector<Outcome>& outcomes);
