@@ -73,13 +73,15 @@ void add_explore_command(CLI::App& app) {
                                   "used; default: ") +
                           default_hand_name());
   cmd->add_option("--palm-width-m", opt->palm_width_m, "Palm width W_palm instead of a hand [m]")
-      ->check(CLI::PositiveNumber)
+      ->check(number_in(1e-4, 10.0))
       ->excludes(hand);
   CordParams* cord = &opt->cord;
   cmd->add_option("--sets", cord->sets, "Valid sets to sample before local improvement (K)")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
-  cmd->add_option("--seed", cord->seed, "Seed of the random generator")->capture_default_str();
+  cmd->add_option("--seed", cord->seed, "Seed of the random generator")
+      ->check(seed_value())
+      ->capture_default_str();
   cmd->add_flag_callback(
       "--no-local-improvement", [cord]() { cord->local_improvement = false; },
       "Skip the local-improvement pass");
@@ -92,11 +94,11 @@ void add_explore_command(CLI::App& app) {
                   "convex clipping, same value, faster)");
   cmd->add_option("--time-limit", cord->time_limit_s,
                   "Wall-clock cap [s]; 0 = none. Hitting it makes results time-dependent")
-      ->check(CLI::NonNegativeNumber)
+      ->check(number_in(0.0, 1e6))
       ->capture_default_str();
   add_enum_option(cmd, "--units", &opt->units, "Units of the object file: m, mm or auto");
   cmd->add_option("--top", opt->top, "Regions to print (0 = all)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(whole_number_in(0, 1000000))
       ->capture_default_str();
   cmd->add_option("--json", opt->json_path, "Also write all regions and stats to this JSON file");
   cmd->callback([opt]() {

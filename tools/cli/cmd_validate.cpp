@@ -34,10 +34,13 @@ void add_validate_command(CLI::App& app) {
   add_enum_option(cmd, "--protocol", &opt->job.protocol,
                   "Phase durations and early exits: quick, or thorough (long phases, no early "
                   "exits; docs/physics.md)");
-  cmd->add_option("--mu", opt->job.mu, "Friction coefficient (default: the plan's μ)");
-  cmd->add_option("--mass", opt->job.mass_kg, "Object mass [kg] (default: density × volume)");
+  cmd->add_option("--mu", opt->job.mu, "Friction coefficient (default: the plan's μ)")
+      ->check(number_in(0.0, 10.0));
+  cmd->add_option("--mass", opt->job.mass_kg, "Object mass [kg] (default: density × volume)")
+      ->check(number_in(1e-6, 1e4));
   cmd->add_option("--density", opt->job.density_kgm3,
-                  "Object density [kg/m^3] (default " + format_number(defaults.density_kgm3) + ")");
+                  "Object density [kg/m^3] (default " + format_number(defaults.density_kgm3) + ")")
+      ->check(number_in(1.0, 1e5));
   cmd->add_option("--object-shape", opt->job.object_shape,
                   "Object collision shape: auto, hull, decomposition, gimpact")
       ->check(CLI::IsMember({"auto", "hull", "decomposition", "gimpact"}))
@@ -47,22 +50,23 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--time-step", opt->job.time_step_s,
                   "Physics time step [s] (default 1/" +
                       std::to_string(std::lround(1.0 / defaults.time_step_s)) + ")")
-      ->check(CLI::PositiveNumber);
+      ->check(number_in(1e-5, 0.02));
   cmd->add_option("--solver-iterations", opt->job.solver_iterations,
                   "Constraint solver iterations per step (default " +
                       std::to_string(defaults.solver_iterations) + ")")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_number_in(1, 10000));
   cmd->add_option("--contact-stiffness", opt->job.contact_stiffness_Npm,
                   "Finger-object contact stiffness [N/m] (default " +
                       format_number(defaults.contact_stiffness_Npm) + "; 0 = rigid contacts)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(number_in(0.0, 1e9));
   cmd->add_option("--contact-damping", opt->job.contact_damping_Nspm,
                   "Finger-object contact damping [N s/m], with --contact-stiffness (default " +
                       format_number(defaults.contact_damping_Nspm) + ")")
-      ->check(CLI::NonNegativeNumber);
+      ->check(number_in(0.0, 1e7));
   cmd->add_option("--squeeze", opt->job.squeeze_rad,
                   "Squeeze spring rest point past the planned joint values [rad] (default " +
-                      format_number(defaults.squeeze_rad) + ")");
+                      format_number(defaults.squeeze_rad) + ")")
+      ->check(number_in(0.0, 3.2));
   cmd->add_option("--squeeze-direction", opt->job.squeeze_direction,
                   std::string("Squeeze: 'actor' (every finger joint closes with its full "
                               "effort) or 'contacts' (the joints press the planned contacts "
@@ -70,12 +74,15 @@ void add_validate_command(CLI::App& app) {
                       to_string(defaults.squeeze_direction) + ")")
       ->check(CLI::IsMember({"actor", "contacts"}));
   cmd->add_option("--effort-scale", opt->job.effort_scale,
-                  "Multiply every joint effort limit (e.g. 0.5 for weaker motors)");
+                  "Multiply every joint effort limit (e.g. 0.5 for weaker motors)")
+      ->check(number_in(1e-3, 100.0));
   cmd->add_option("--concavity", opt->job.concavity,
-                  "HACD: largest concavity of a part, fraction of the bounding-box diagonal");
+                  "HACD: largest concavity of a part, fraction of the bounding-box diagonal")
+      ->check(number_in(0.0, 1.0));
   cmd->add_option("--hacd-triangles", opt->job.hacd_triangles,
                   "HACD: decompose a vertex-clustered copy of at most this many triangles "
-                  "(0 = the mesh itself)");
+                  "(0 = the mesh itself)")
+      ->check(whole_number_in(0, 10000000));
   cmd->add_option("--hull-vertices", opt->job.hull_vertices,
                   "Most vertices of each object hull (the single hull or a decomposition part; "
                   "default " +
@@ -89,7 +96,8 @@ void add_validate_command(CLI::App& app) {
                   "results do not depend on it (--snapshots runs one at a time)")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
-  cmd->add_option("--grasps", opt->job.grasps, "Validate only the first K grasps of the plan");
+  cmd->add_option("--grasps", opt->job.grasps, "Validate only the first K grasps of the plan")
+      ->check(whole_number_in(1, 100000));
   cmd->add_option("--trials", opt->job.trials,
                   "Simulate each grasp N times: as planned, then with the hand moved by "
                   "--trial-offset and turned by --trial-turn (held / not-held of marginal "
@@ -98,13 +106,14 @@ void add_validate_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--trial-offset", opt->job.perturbation.offset_m,
                   "Hand offset of the repeated trials [m], random direction")
-      ->check(CLI::NonNegativeNumber)
+      ->check(number_in(0.0, 0.1))
       ->capture_default_str();
   cmd->add_option("--trial-turn", opt->job.perturbation.turn_rad,
                   "Hand turn of the repeated trials about the GCP [rad], random axis")
-      ->check(CLI::NonNegativeNumber)
+      ->check(number_in(0.0, 0.5))
       ->capture_default_str();
   cmd->add_option("--seed", opt->job.seed, "Seed of the trials' random directions")
+      ->check(seed_value())
       ->capture_default_str();
   cmd->add_option("--trace", opt->job.trace_path,
                   "CSV of the object's shift [m] and turn [rad] in the hand and its contact count, "
@@ -112,7 +121,7 @@ void add_validate_command(CLI::App& app) {
                   "of each grasp)");
   cmd->add_option("--trace-interval", opt->job.trace_interval_s,
                   "Simulated time between --trace rows [s]")
-      ->check(CLI::PositiveNumber)
+      ->check(number_in(1e-4, 10.0))
       ->capture_default_str();
   cmd->add_option("--snapshots", opt->job.snapshots_dir,
                   "Existing folder: one PNG per grasp and phase end, grasp_K_<phase>.png");
@@ -127,17 +136,7 @@ void add_validate_command(CLI::App& app) {
                      stage == "grasps" ? "" : "trials of ", done, total);
       };
     const SimDocument doc = validate_job(opt->job, cb);
-    int held = 0;
-    for (const SimResult& r : doc.results) held += r.held();
-    std::printf("held %d / %d (tests %s, mu %.3g) -> %s\n", held,
-                static_cast<int>(doc.results.size()), opt->job.tests.c_str(),
-                doc.params.contact.mu, opt->job.out.c_str());
-    std::printf("%s\n", failures_line(doc.results).c_str());
-    if (!doc.trial_outcomes.empty()) {
-      std::vector<Outcome> all;
-      for (const auto& t : doc.trial_outcomes) all.insert(all.end(), t.begin(), t.end());
-      std::printf("%s of all grasps\n", trials_line(all).c_str());
-    }
+    std::cout << validation_summary(doc, opt->job.tests, opt->job.out);
   });
 }
 

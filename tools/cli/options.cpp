@@ -1,34 +1,100 @@
 #include "options.h"
 
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
 namespace cordgrasp::cli {
+namespace {
+
+std::string number_text(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+bool all_digits(const std::string& text, bool allow_minus) {
+  size_t i = allow_minus && !text.empty() && text[0] == '-' ? 1 : 0;
+  if (i == text.size()) return false;
+  for (; i < text.size(); ++i)
+    if (text[i] < '0' || text[i] > '9') return false;
+  return true;
+}
+
+}  // namespace
+
+CLI::Validator number_in(double lo, double hi) {
+  const std::string rule = "a finite number in [" + number_text(lo) + ", " + number_text(hi) + "]";
+  return CLI::Validator(
+      [lo, hi, rule](std::string& text) {
+        char* end = nullptr;
+        errno = 0;
+        const double v = std::strtod(text.c_str(), &end);
+        const bool parsed = end != text.c_str() && *end == '\0' && errno != ERANGE;
+        if (!parsed || !std::isfinite(v) || v < lo || v > hi) return text + " is not " + rule;
+        return std::string();
+      },
+      rule);
+}
+
+CLI::Validator whole_number_in(long long lo, long long hi) {
+  const std::string rule =
+      "a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  return CLI::Validator(
+      [lo, hi, rule](std::string& text) {
+        if (!all_digits(text, true) || text.size() > 18) return text + " is not " + rule;
+        const long long v = std::stoll(text);
+        if (v < lo || v > hi) return text + " is not " + rule;
+        return std::string();
+      },
+      rule);
+}
+
+CLI::Validator seed_value() {
+  const std::string rule = "a whole number in [0, 18446744073709551615]";
+  return CLI::Validator(
+      [rule](std::string& text) {
+        if (!all_digits(text, false)) return text + " is not " + rule;
+        errno = 0;
+        char* end = nullptr;
+        (void)std::strtoull(text.c_str(), &end, 10);
+        if (errno == ERANGE || *end != '\0') return text + " is not " + rule;
+        return std::string();
+      },
+      rule);
+}
 
 void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
   cmd->add_option("--planner", p.planner, "cord (Li et al. 2015) or generic (Simox baseline)")
       ->check(CLI::IsMember({"cord", "generic"}))
       ->capture_default_str();
   cmd->add_option("--grasps,-n", p.plan.grasps, "Stop after this many force-closure grasps")
-      ->check(CLI::PositiveNumber)
+      ->check(whole_number_in(1, 10000))
       ->capture_default_str();
   cmd->add_option("--time-limit", p.plan.time_limit_s, "Wall-clock limit of the plan [s]")
-      ->check(CLI::PositiveNumber)
+      ->check(number_in(1e-3, 1e6))
       ->capture_default_str();
-  cmd->add_option("--seed", p.plan.seed, "Seed of every random choice")->capture_default_str();
+  cmd->add_option("--seed", p.plan.seed, "Seed of every random choice")
+      ->check(seed_value())
+      ->capture_default_str();
   cmd->add_option("--mu", p.plan.quality.contact.mu,
                   "Friction coefficient of the wrench space and the physics")
-      ->check(CLI::NonNegativeNumber)
+      ->check(number_in(0.0, 10.0))
       ->capture_default_str();
   cmd->add_option("--soft-finger-radius", p.soft_finger_radius_m,
                   "Contact patch radius for torsional friction [m]; 0 = point contacts "
                   "(default: the hand's soft_finger_radius_m, 5 mm for the grippers)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(number_in(0.0, 0.0499));
   add_enum_option(cmd, "--side-cords", &p.cord.side_cord_policy,
                   "Cord: a scanned cord that fails: empty (missed object scores as empty), "
                   "discard (the paper) or shrink (docs/algorithm.md §4)");
   add_enum_option(cmd, "--quality", &p.plan.quality.mode,
-                  "textbook (real mu, eps = origin to hull) or simox (compat quirks, docs/algorithm.md §8)");
+                  "textbook (real mu, eps = origin to hull) or simox (compat quirks, "
+                  "docs/algorithm.md §8)");
   add_enum_option(cmd, "--units", &p.units, "Units of the object file: m, mm or auto");
   cmd->add_option("--sets", p.cord.sets, "Cord: valid sets to sample before local improvement")
-      ->check(CLI::PositiveNumber)
+      ->check(whole_number_in(1, 100000))
       ->capture_default_str();
   cmd->add_flag_callback(
       "--no-local-improvement", [&p]() { p.cord.local_improvement = false; },

@@ -30,6 +30,16 @@ CLI::Option* add_enum_option(CLI::App* cmd, const std::string& name, E* field,
       ->default_str(to_string(*field));
 }
 
+/// Accepts finite numbers in [lo, hi]; refusals read "--mu: nan is not a finite number in
+/// [0, 10]" (CLI11 puts the option's name first).
+CLI::Validator number_in(double lo, double hi);
+
+/// Accepts whole numbers in [lo, hi], written as digits (no "1e3", no "2.5").
+CLI::Validator whole_number_in(long long lo, long long hi);
+
+/// Accepts a seed: a whole number in [0, 2^64 − 1] written as digits (no sign, no exponent).
+CLI::Validator seed_value();
+
 /// Adds the planner options (--planner, --grasps, --time-limit, --seed, --mu,
 /// --soft-finger-radius, --side-cords, --quality, --units, --sets, --no-local-improvement) to
 /// `cmd`, bound to `p`.

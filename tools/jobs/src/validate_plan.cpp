@@ -90,6 +90,22 @@ void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const Hand
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+std::string validation_summary(const SimDocument& doc, const std::string& tests,
+                               const std::string& out_path) {
+  int held = 0;
+  for (const SimResult& r : doc.results) held += r.held();
+  char head[96];
+  std::snprintf(head, sizeof(head), "held %d / %d (tests %s, mu %.3g) -> ", held,
+                static_cast<int>(doc.results.size()), tests.c_str(), doc.params.contact.mu);
+  std::string text = head + out_path + "\n" + failures_line(doc.results) + "\n";
+  if (!doc.trial_outcomes.empty()) {
+    std::vector<Outcome> all;
+    for (const auto& t : doc.trial_outcomes) all.insert(all.end(), t.begin(), t.end());
+    text += trials_line(all) + " of all grasps\n";
+  }
+  return text;
+}
+
 int count_held(const std::vector<Outcome>& outcomes) {
   return static_cast<int>(std::count(outcomes.begin(), outcomes.end(), Outcome::kHeld));
 }

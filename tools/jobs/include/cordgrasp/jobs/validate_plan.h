@@ -66,6 +66,11 @@ void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const Hand
                           std::uint64_t seed, const ValidateProgress& progress = {},
                           int jobs = 1);
 
+/// The closing lines of a validation: "held 2 / 3 (tests lift,shake, mu 0.5) -> OUT", the
+/// failures_line and, with trials, "held in k / N trials of all grasps"; each ends in '\n'.
+std::string validation_summary(const SimDocument& doc, const std::string& tests,
+                               const std::string& out_path);
+
 /// How many of `outcomes` are held.
 int count_held(const std::vector<Outcome>& outcomes);
 
