@@ -34,6 +34,16 @@ std::string fixed(double v, int digits) {
   return s.str();
 }
 
+// Writes `image` to `path` and says so: "render: wrote out.png (1024x768, view iso)".
+std::string write_picture(const std::string& path, const Image& image,
+                          const RenderParams& params) {
+  write_png(path, image);
+  std::ostringstream line;
+  line << "render: wrote " << path << " (" << image.width << "x" << image.height << ", view "
+       << view_name(params.view.view) << ")";
+  return line.str();
+}
+
 // Regions of `cordgrasp explore --json`: the object with one region's front cords and P1, P_l,
 // P_r, or with --sheet N the N best regions as a contact sheet.
 std::string run_render_regions(const RenderJobParams& opt, const Warn& /*warn*/) {
@@ -105,11 +115,7 @@ std::string run_render_regions(const RenderJobParams& opt, const Warn& /*warn*/)
     sheet.title = object->name + " · cord exploration · " + std::to_string(count) +
                   " regions, best " + std::to_string(tiles.size()) + " by χ";
   const Image image = opt.sheet > 0 ? compose_contact_sheet(tiles, captions, sheet) : tiles[0];
-  write_png(opt.out, image);
-  std::ostringstream line;
-  line << "render: wrote " << opt.out << " (" << image.width << "x" << image.height
-            << ", view " << view_name(params.view.view) << ")";
-  return line.str();
+  return write_picture(opt.out, image, params);
 }
 
 // Objects: one picture, or with several --object a contact sheet of one tile (--size) each.
@@ -135,11 +141,7 @@ std::string run_render_objects(const RenderJobParams& opt, const Warn& /*warn*/)
     tiles.push_back(renderer.render(scene, params));
   }
   const Image image = tiles.size() == 1 ? tiles[0] : compose_contact_sheet(tiles, captions);
-  write_png(opt.out, image);
-  std::ostringstream line;
-  line << "render: wrote " << opt.out << " (" << image.width << "x" << image.height
-            << ", view " << view_name(params.view.view) << ")";
-  return line.str();
+  return write_picture(opt.out, image, params);
 }
 
 // A hand alone at a configuration: preshape, partly closed (--close) and/or --joint values.
@@ -298,11 +300,7 @@ std::string run_render_plan(const RenderJobParams& opt, const Warn& warn) {
     sheet.title = who + " · first " + std::to_string(tiles.size()) + " of " +
                   std::to_string(count) + " grasps";
   const Image image = opt.sheet > 0 ? compose_contact_sheet(tiles, captions, sheet) : tiles[0];
-  write_png(opt.out, image);
-  std::ostringstream line;
-  line << "render: wrote " << opt.out << " (" << image.width << "x" << image.height
-            << ", view " << view_name(params.view.view) << ")";
-  return line.str();
+  return write_picture(opt.out, image, params);
 }
 
 }  // namespace
