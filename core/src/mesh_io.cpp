@@ -102,6 +102,8 @@ std::string point_text(const Eigen::Vector3d& p) {
 }  // namespace
 
 Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoadReport* report) {
+  if (!(std::isfinite(options.scale) && options.scale > 0.0))
+    throw std::invalid_argument("load_mesh: scale must be finite and > 0");
   std::error_code ec;
   if (!fs::exists(path, ec)) fail(path, "file not found");
   if (fs::is_directory(path, ec)) fail(path, "is a directory, not a mesh file");
@@ -141,6 +143,7 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
       rep.auto_chose_mm = true;
     }
   }
+  scale *= options.scale;
   rep.scale_to_m = scale;
   if (scale != 1.0)
     for (auto& v : mesh.vertices) v *= scale;

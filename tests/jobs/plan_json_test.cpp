@@ -43,6 +43,7 @@ PlanDocument sample_plan(const HandModel& hand) {
   cord.sphere_sequence = SphereSequence::kFibonacci;
   cord.side_cord_policy = SideCordPolicy::kShrink;
   doc.cord = cord;
+  doc.object_scale = 2.5;
   doc.stats.attempts = 3;
   doc.stats.force_closure = 1;
   doc.stats.first_force_closure_s = 0.25;
@@ -84,6 +85,7 @@ TEST(PlanJson, RoundTripsEveryField) {
   EXPECT_EQ(plan_contact_model(back).mu, 0.7);
   EXPECT_EQ(plan_contact_model(back).soft_finger_radius_m, 0.004);
   EXPECT_EQ(back.palm_width_m, 0.085);
+  EXPECT_EQ(back.object_scale, 2.5);
   ASSERT_TRUE(back.cord.has_value());
   EXPECT_EQ(back.cord->xi_min_m, 0.02);
   EXPECT_EQ(back.cord->eps_len_m, 2e-9);
@@ -255,6 +257,21 @@ TEST(PlanJson, RefusesNonUnitQuaternionsFarPositionsNaNAndJointsOutsideLimits) {
   expect_refused("joint past its limit", [&](nlohmann::json& j) {
     j["grasps"][0]["joints"][moving] = 1e3;
   }, "outside the joint's limits");
+}
+
+TEST(PlanJson, APlanWithoutAnObjectScaleReadsAsScaleOneAndABadScaleIsRefused) {
+  const HandModel hand = load_hand("parallel_gripper");
+  nlohmann::json j = plan_to_json(sample_plan(hand), hand);
+  j["inputs"]["object"].erase("scale");
+  EXPECT_EQ(plan_from_json(j, hand).object_scale, 1.0);
+  j["inputs"]["object"]["scale"] = -2.0;
+  try {
+    plan_from_json(j, hand, "/abs/plan.json");
+    FAIL() << "a negative scale was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/abs/plan.json: inputs.object.scale"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <string>
 #include <vector>
@@ -90,6 +91,21 @@ TEST(LoadMesh, MillimeterBoxIsScaledByMmAndDetectedByAuto) {
   m = load_mesh(path, options, &report);
   EXPECT_EQ(report.scale_to_m, 1.0);
   EXPECT_TRUE(mesh_bounds(m).size().isApprox(1000 * size_m, 1e-12));
+}
+
+TEST(LoadMesh, ScaleMultipliesAfterTheUnitsAndMustBePositive) {
+  const std::string path = test::test_data("meshes/box_100mm.obj");
+  MeshLoadOptions options;
+  options.units = LengthUnits::kMillimeters;
+  options.scale = 2.0;
+  MeshLoadReport report;
+  const Mesh m = load_mesh(path, options, &report);
+  EXPECT_EQ(report.scale_to_m, 2e-3);
+  EXPECT_TRUE(mesh_bounds(m).size().isApprox(Eigen::Vector3d(0.2, 0.16, 0.12), 1e-12));
+  for (double bad : {0.0, -1.0, std::nan("")}) {
+    options.scale = bad;
+    EXPECT_THROW(load_mesh(path, options), std::invalid_argument) << bad;
+  }
 }
 
 TEST(LoadMesh, AutoUnitsKeepMetersForAMeterScaleMesh) {

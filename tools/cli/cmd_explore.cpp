@@ -97,6 +97,7 @@ void add_explore_command(CLI::App& app) {
       ->check(number_in(0.0, 1e6))
       ->capture_default_str();
   add_enum_option(cmd, "--units", &opt->units, "Units of the object file: m, mm or auto");
+  add_scale_option(cmd, &opt->scale);
   cmd->add_option("--top", opt->top, "Regions to print (0 = all)")
       ->check(whole_number_in(0, 1000000))
       ->capture_default_str();

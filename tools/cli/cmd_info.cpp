@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "options.h"
 #include "cordgrasp/jobs/info.h"
 
 namespace cordgrasp::cli {
@@ -12,6 +13,7 @@ struct InfoOptions {
   std::string object;
   std::string hand;
   std::string units = "m";
+  double scale = 1.0;
   bool json = false;
 };
 
@@ -27,6 +29,7 @@ void add_info_command(CLI::App& app) {
   cmd->add_option("--units", opt->units, "Units of the object file: m, mm or auto")
       ->check(CLI::IsMember({"m", "mm", "auto"}))
       ->capture_default_str();
+  add_scale_option(cmd, &opt->scale);
   cmd->add_flag("--json", opt->json, "Print machine-readable JSON instead of text");
   cmd->callback([opt]() {
     if (opt->object.empty() == opt->hand.empty())
@@ -39,7 +42,7 @@ void add_info_command(CLI::App& app) {
         print_hand_info(j);
       return;
     }
-    const nlohmann::json j = object_info_json(opt->object, opt->units);
+    const nlohmann::json j = object_info_json(opt->object, opt->units, opt->scale);
     if (opt->json)
       std::cout << j.dump(2) << '\n';
     else

@@ -45,6 +45,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--units", opt->units, "Units of the object file: m, mm or auto")
       ->check(CLI::IsMember({"m", "mm", "auto"}))
       ->capture_default_str();
+  add_scale_option(cmd, &opt->scale, " (a plan is drawn at its own scale)");
   add_picture_options(*cmd, opt->picture);
   cmd->add_option("--out", opt->out, "Output PNG file")->required();
   cmd->callback([opt]() {

@@ -29,6 +29,10 @@ void add_validate_command(CLI::App& app) {
                   "Object mesh (default: the plan's); another object is an error");
   cmd->add_option("--units", opt->job.units, "Units of --object: m, mm or auto (default: the plan's)")
       ->check(CLI::IsMember({"m", "mm", "auto"}));
+  cmd->add_option_function<double>(
+         "--scale", [opt](double s) { opt->job.scale = s; },
+         "Scale of --object after --units (default: the plan's)")
+      ->check(number_in(1e-6, 1000.0));
   cmd->add_option("--tests", opt->job.tests, "Tests to run after closing: lift,shake,gravity6")
       ->capture_default_str();
   add_enum_option(cmd, "--protocol", &opt->job.protocol,

@@ -65,6 +65,15 @@ CLI::Validator seed_value() {
       rule);
 }
 
+CLI::Option* add_scale_option(CLI::App* cmd, double* scale, const std::string& extra_help) {
+  return cmd
+      ->add_option("--scale", *scale,
+                   "Uniform object scale after --units, e.g. 2 for a mesh at half its real "
+                   "size" + extra_help)
+      ->check(number_in(1e-6, 1000.0))
+      ->capture_default_str();
+}
+
 void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
   cmd->add_option("--planner", p.planner, "cord (Li et al. 2015) or generic (Simox baseline)")
       ->check(CLI::IsMember({"cord", "generic"}))
@@ -93,6 +102,7 @@ void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
                   "textbook (real mu, eps = origin to hull) or simox (compat quirks, "
                   "docs/algorithm.md §8)");
   add_enum_option(cmd, "--units", &p.units, "Units of the object file: m, mm or auto");
+  add_scale_option(cmd, &p.scale);
   cmd->add_option("--sets", p.cord.sets, "Cord: valid sets to sample before local improvement")
       ->check(whole_number_in(1, 100000))
       ->capture_default_str();

@@ -274,7 +274,7 @@ const std::vector<std::string>& bench_csv_columns() {
       "exploration_s", "finger_s",       "quality_s",     "total_s",       "regions",
       "regions_processed", "finger_attempts", "grasps",   "timed_out",     "epsilon",
       "alpha_rad",    "chi_m2",          "region_rank",   "sim_lift",      "sim_shake",
-      "sim_gravity6", "sim_outcome",     "sim_wall_s"};
+      "sim_gravity6", "sim_outcome",     "sim_wall_s",    "object_scale"};
   return kColumns;
 }
 
@@ -312,7 +312,8 @@ std::vector<std::string> bench_row_cells(const BenchRow& r) {
           r.sim_shake,
           r.sim_gravity6,
           r.sim_outcome,
-          optional_seconds(r.sim_wall_s)};
+          optional_seconds(r.sim_wall_s),
+          format_number(r.object_scale, "%.17g")};
 }
 
 std::string bench_csv(const std::vector<BenchRow>& rows) {
@@ -369,6 +370,7 @@ std::vector<BenchRow> parse_bench_csv(const std::string& text, const std::string
     r.sim_gravity6 = c[25];
     r.sim_outcome = c[26];
     r.sim_wall_s = parse_optional_double(c[27], where);
+    r.object_scale = parse_double(c[28], where);
     rows.push_back(std::move(r));
   }
   return rows;
@@ -426,6 +428,7 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
   row.attempt = attempt.index;
   row.object = fs::path(attempt.object_path).stem().string();
   row.object_path = attempt.object_path;
+  row.object_scale = params.job.scale;
   row.hand = attempt.hand;
   row.planner = attempt.planner;
   row.repeat = attempt.repeat;

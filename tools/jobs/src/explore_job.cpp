@@ -15,6 +15,7 @@ ExploreOutcome explore_job(const ExploreJobParams& opt) {
   ExploreOutcome out;
   MeshLoadOptions load;
   load.units = opt.units;
+  load.scale = opt.scale;
   const Mesh mesh = load_mesh(opt.object, load);
   out.object_name = mesh.name;
   out.triangles = static_cast<int>(mesh.triangles.size());

@@ -13,9 +13,11 @@
 
 namespace cordgrasp {
 
-nlohmann::json object_info_json(const std::string& path, const std::string& units) {
+nlohmann::json object_info_json(const std::string& path, const std::string& units,
+                                double scale) {
   MeshLoadOptions opt;
   opt.units = parse_length_units(units);
+  opt.scale = scale;
   MeshLoadReport report;
   const Mesh mesh = load_mesh(path, opt, &report);
   const Aabb box = mesh_bounds(mesh);
@@ -31,6 +33,7 @@ nlohmann::json object_info_json(const std::string& path, const std::string& unit
   j["vertices"] = mesh.vertices.size();
   j["degenerate_dropped"] = report.degenerate_dropped;
   j["units"] = units;
+  j["scale"] = scale;
   j["scale_to_m"] = report.scale_to_m;
   j["units_auto_chose_mm"] = report.auto_chose_mm;
   j["bounds_min_m"] = to_json(box.min);
@@ -90,8 +93,8 @@ void print_object_info(const nlohmann::json& j) {
   if (j["units_auto_chose_mm"].get<bool>())
     std::cout << "units      auto: bounding-box diagonal > 5, read as millimeters (x 0.001)\n";
   else if (j["scale_to_m"].get<double>() != 1.0)
-    std::cout << "units      " << j["units"].get<std::string>() << " (x "
-              << j["scale_to_m"].get<double>() << ")\n";
+    std::cout << "units      " << j["units"].get<std::string>() << ", scale "
+              << j["scale"].get<double>() << " (x " << j["scale_to_m"].get<double>() << ")\n";
   const std::string bounds = vec_text(j["bounds_min_m"]) + " .. " + vec_text(j["bounds_max_m"]);
   std::cout << "size [m]   " << vec_text(j["size_m"]) << '\n'
             << "bounds [m] " << bounds << '\n'

@@ -20,6 +20,7 @@ std::string absolute_path(const std::string& path) {
 Mesh load_job_mesh(const PlanJobParams& p, const std::string& object_path) {
   MeshLoadOptions load;
   load.units = p.units;
+  load.scale = p.scale;
   MeshLoadReport report;
   Mesh mesh = load_mesh(object_path, load, &report);
   if (report.auto_chose_mm)
@@ -54,6 +55,7 @@ PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::strin
   doc.object_path = absolute_path(object_path);
   doc.object_name = mesh.name;
   doc.object_units = to_string(p.units);
+  doc.object_scale = p.scale;
   doc.object_triangles = static_cast<int>(mesh.triangles.size());
   doc.planner = p.planner;
   doc.params = params;

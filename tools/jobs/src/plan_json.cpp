@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "cordgrasp/jobs/region_json.h"
+#include "cordgrasp/jobs/text_format.h"
 
 #include <fstream>
 #include <sstream>
@@ -212,6 +213,7 @@ nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand) {
              {{"path", plan.object_path},
               {"name", plan.object_name},
               {"units", plan.object_units},
+              {"scale", plan.object_scale},
               {"triangles", plan.object_triangles}}}}},
           {"parameters", [&plan] {
              PlanDocument copy = plan;  // the visitor takes field addresses
@@ -268,6 +270,13 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
     p.object_path = in_obj.at("path").get<std::string>();
     p.object_name = in_obj.value("name", std::string());
     p.object_units = in_obj.value("units", std::string("m"));
+    // absent in plans written before --scale
+    if (in_obj.contains("scale") && !in_obj.at("scale").is_number())
+      throw InputError(source + ": inputs.object.scale: not a number");
+    p.object_scale = in_obj.value("scale", 1.0);
+    if (!(std::isfinite(p.object_scale) && p.object_scale > 0.0))
+      throw InputError(source + ": inputs.object.scale: " + format_number(p.object_scale) +
+                       " is not finite and > 0");
     p.object_triangles = in_obj.value("triangles", 0);
     if (!j.contains("parameters")) throw InputError(source + ": parameters: missing");
     JsonReadArchive parameters(j.at("parameters"), source, "parameters");

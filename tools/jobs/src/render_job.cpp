@@ -74,6 +74,7 @@ std::string run_render_regions(const RenderJobParams& opt, const Warn& /*warn*/)
     throw InputError("render: '" + opt.regions + "': no object; give --object");
   MeshLoadOptions load;
   load.units = parse_length_units(opt.units);
+  load.scale = opt.scale;
   const auto object = std::make_shared<const Mesh>(load_mesh(object_path, load));
   const double radius = bounding_radius(*object, vertex_mean(*object));
 
@@ -122,6 +123,7 @@ std::string run_render_regions(const RenderJobParams& opt, const Warn& /*warn*/)
 std::string run_render_objects(const RenderJobParams& opt, const Warn& /*warn*/) {
   MeshLoadOptions load;
   load.units = parse_length_units(opt.units);
+  load.scale = opt.scale;
   Renderer renderer;
   std::vector<Image> tiles;
   std::vector<std::string> captions;
@@ -243,6 +245,7 @@ std::string run_render_plan(const RenderJobParams& opt, const Warn& warn) {
                      "' has grasps 0.." + std::to_string(count - 1));
   MeshLoadOptions load;
   load.units = parse_length_units(plan.object_units);
+  load.scale = plan.object_scale;
   const auto object = std::make_shared<const Mesh>(load_mesh(plan.object_path, load));
   bool stored_regions = true;  // every grasp carries its region: no need to replay
   for (int k = first; k <= last; ++k) stored_regions &= plan.grasps[k].region.has_value();

@@ -34,7 +34,7 @@ std::string run_report_markdown(const RunReport& rep) {
 
   md << "## Inputs\n\n";
   md << "- Object: `" << plan.object_path << "` (" << plan.object_triangles << " triangles, units "
-     << plan.object_units << ")\n";
+     << plan.object_units << ", scale " << format_number(plan.object_scale) << ")\n";
   md << "- Hand: " << plan.hand_name << " (`" << plan.hand_path << "`)\n";
   md << "- Planner: " << plan.planner << ", up to "
      << plan.params.grasps << " grasps, time limit " << num(plan.params.time_limit_s)

@@ -113,7 +113,8 @@ nlohmann::json sim_to_json(const SimDocument& doc, const HandModel& hand) {
            {{"plan", doc.plan_path},
             {"hand", {{"name", doc.hand_name}, {"path", doc.hand_path}}},
             {"object", {{"path", doc.object_path}, {"name", doc.object_name},
-                        {"units", doc.object_units}, {"triangles", doc.object_triangles}}},
+                        {"units", doc.object_units}, {"scale", doc.object_scale},
+                        {"triangles", doc.object_triangles}}},
             {"plan_seed", doc.plan_seed ? nlohmann::json(*doc.plan_seed)
                                         : nlohmann::json(nullptr)}}},
           {"parameters", params},

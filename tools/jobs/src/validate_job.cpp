@@ -41,6 +41,7 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   // Object: the plan's, or the one given (which must be the plan's geometry).
   MeshLoadOptions mesh_opt;
   mesh_opt.units = parse_length_units(opt.units.empty() ? plan.object_units : opt.units);
+  mesh_opt.scale = opt.scale.value_or(plan.object_scale);
   Mesh mesh;
   if (opt.object.empty()) {
     mesh = load_mesh(plan.object_path, mesh_opt);

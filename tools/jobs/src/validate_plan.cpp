@@ -23,6 +23,7 @@ SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const
   doc.object_path = plan.object_path;
   doc.object_name = plan.object_name;
   doc.object_units = plan.object_units;
+  doc.object_scale = plan.object_scale;
   doc.object_triangles = static_cast<int>(mesh.triangles.size());
   doc.plan_seed = plan.params.seed;
   doc.params = params;

@@ -17,12 +17,13 @@ LengthUnits parse_length_units(const std::string& text);
 struct MeshLoadOptions {
   LengthUnits units = LengthUnits::kMeters;  ///< units of the file's coordinates
   double auto_mm_diagonal = 5.0;  ///< kAuto picks mm when the bbox diagonal exceeds this [file units]
+  double scale = 1.0;  ///< uniform factor applied after the unit conversion, about the origin (> 0)
 };
 
 /// What load_mesh did besides loading.
 struct MeshLoadReport {
   int degenerate_dropped = 0;  ///< zero-area or repeated-index triangles removed
-  double scale_to_m = 1.0;     ///< factor applied to the file's coordinates
+  double scale_to_m = 1.0;     ///< factor applied to the file's coordinates (units × scale)
   bool auto_chose_mm = false;  ///< kAuto decided the file was in millimeters
 };
 
@@ -33,7 +34,8 @@ struct MeshLoadReport {
 /// below 1e-7 of the bounding-box diagonal, i.e. zero at float precision) are dropped and
 /// counted in `report`.
 /// @throws InputError "load_mesh: '<path>': <problem>" for a missing/unreadable/empty file,
-///         unknown format, zero triangles, NaN/inf coordinates or all-degenerate geometry.
+///         unknown format, zero triangles, NaN/inf coordinates or all-degenerate geometry;
+///         std::invalid_argument when options.scale is not finite and > 0.
 Mesh load_mesh(const std::string& path, const MeshLoadOptions& options = {},
                MeshLoadReport* report = nullptr);
 

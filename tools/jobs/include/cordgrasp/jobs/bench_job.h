@@ -88,6 +88,7 @@ struct BenchRow {
   std::string sim_lift, sim_shake, sim_gravity6;  ///< phase outcome; "" = not simulated
   std::string sim_outcome;                         ///< overall; "" = not simulated
   std::optional<double> sim_wall_s;                ///< [s]
+  double object_scale = 1.0;                       ///< --scale the object was loaded with
 };
 
 /// Column names of results.csv, in order.

@@ -16,6 +16,7 @@ namespace cordgrasp {
 struct ExploreJobParams {
   std::string object;                         ///< mesh file
   LengthUnits units = LengthUnits::kMeters;   ///< units of the mesh file
+  double scale = 1.0;                         ///< uniform scale after the units
   std::string hand;          ///< palm width from this hand ("": the shipped default hand)
   double palm_width_m = 0.0; ///< > 0: this palm width instead of a hand's [m]
   CordParams cord;           ///< every exploration parameter

@@ -5,7 +5,8 @@
 namespace cordgrasp {
 
 /// `info --object`: loads the mesh and summarizes it (sizes in m). @throws InputError.
-nlohmann::json object_info_json(const std::string& path, const std::string& units);
+nlohmann::json object_info_json(const std::string& path, const std::string& units,
+                                double scale = 1.0);
 
 /// Human-readable form of object_info_json() on stdout.
 void print_object_info(const nlohmann::json& info);

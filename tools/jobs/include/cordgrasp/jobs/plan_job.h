@@ -28,16 +28,18 @@ struct PlanJobParams {
   /// (overrides plan.quality.contact.soft_finger_radius_m).
   std::optional<double> soft_finger_radius_m;
   LengthUnits units = LengthUnits::kMeters;  ///< object file units
+  double scale = 1.0;  ///< uniform object scale applied after the units (e.g. 2: twice the size)
 
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
   void Serialize(Archive* a) {
     visit_fields(a, CORDGRASP_NVP(planner), CORDGRASP_NVP(plan), CORDGRASP_NVP(cord),
-                 CORDGRASP_NVP(soft_finger_radius_m), CORDGRASP_NVP(units));
+                 CORDGRASP_NVP(soft_finger_radius_m), CORDGRASP_NVP(units), CORDGRASP_NVP(scale));
   }
 };
 
-/// Loads the object mesh in p.units. Says on stderr when --units auto read it as millimetres,
+/// Loads the object mesh in p.units, scaled by p.scale. Says on stderr when --units auto read it
+/// as millimetres,
 /// and warns when a file read as meters is over 5 m across (a millimetre file given as m).
 /// @throws InputError as load_mesh.
 Mesh load_job_mesh(const PlanJobParams& p, const std::string& object_path);

@@ -3,7 +3,7 @@
 //
 // Layout (format_version 2), all lengths in meters, angles in radians:
 //   format: "cordgrasp-plan", format_version: 2, cordgrasp_version
-//   inputs: {hand: {name, path, urdf_path}, object: {path, name, units, triangles}}
+//   inputs: {hand: {name, path, urdf_path}, object: {path, name, units, scale, triangles}}
 //   parameters: {planner, every PlanParams field (grasps, time_limit_s, seed, finger{..},
 //                quality{contact{mu, cone_edges, soft_finger_radius_m}, mode, ..}, ..),
 //                palm_width_m, cord: every CordParams field (null for the generic planner)},
@@ -40,6 +40,7 @@ struct PlanDocument {
   std::string object_path;  ///< absolute path of the object mesh
   std::string object_name;
   std::string object_units = "m";  ///< as given to --units (m, mm or auto)
+  double object_scale = 1.0;       ///< as given to --scale (applied after the units)
   int object_triangles = 0;
   std::string planner = "cord";  ///< cord or generic
   PlanParams params;             ///< as planned; params.quality.contact is the ContactModel

@@ -25,6 +25,7 @@ struct RenderJobParams {
   int region = 1;       // 1-based rank
   int sheet = 0;        // > 0: the first N as a contact sheet
   std::string units = "m";
+  double scale = 1.0;  ///< object scale after the units (a plan's pictures use the plan's)
   std::string out;
 };
 

@@ -3,7 +3,7 @@
 //
 // Layout (format_version 2), meters, radians, seconds, kilograms:
 //   format: "cordgrasp-sim", format_version: 2, cordgrasp_version, backend (Bullet version)
-//   inputs: {plan, hand: {name, path}, object: {path, name, units, triangles}, plan_seed}
+//   inputs: {plan, hand: {name, path}, object: {path, name, units, scale, triangles}, plan_seed}
 //   parameters: {tests, every SimParams field through its Serialize visitor (sim_params_to_json:
 //                contact{mu, cone_edges, soft_finger_radius_m}, time_step_s, ...,
 //                decomposition{..}, ...)}

@@ -19,6 +19,7 @@ struct ValidateJobParams {
   std::string hand;
   std::string object;
   std::string units;
+  std::optional<double> scale;  ///< object scale (default: the plan's)
   std::string tests = "lift,shake,gravity6";
   Protocol protocol = Protocol::kQuick;  ///< preset applied before the options below
   std::optional<double> mu;

@@ -24,6 +24,7 @@ struct SimDocument {
   std::string object_path;
   std::string object_name;
   std::string object_units = "m";
+  double object_scale = 1.0;
   int object_triangles = 0;
   std::optional<std::uint64_t> plan_seed;  ///< the plan's seed (the simulation draws none)
   SimParams params;
