@@ -15,7 +15,8 @@ constexpr EnumName<XorBackend> kXorBackendNames[] = {{XorBackend::kClipper, "cli
 constexpr EnumName<SideCordPolicy> kSideCordPolicyNames[] = {
     {SideCordPolicy::kDiscardSet, "discard"},
     {SideCordPolicy::kShrink, "shrink"},
-    {SideCordPolicy::kEmptyWhenMissed, "empty"}};
+    {SideCordPolicy::kEmptyWhenMissed, "empty"},
+    {SideCordPolicy::kFallback, "fallback"}};
 
 }  // namespace
 

@@ -64,14 +64,21 @@ std::vector<GraspRegion> explore_cords(const Mesh& mesh, double palm_width_m,
   // Algorithm 1 (docs/algorithm.md §5).
   std::vector<GraspRegion> found;
   const size_t wanted = size_t(std::max(0, params.sets));
+  // kFallback (docs/algorithm.md §4): sampling ends at `wanted` sets whose cords all touch the
+  // object, or at 2 × `wanted` sets in all when the object is too small for full sets.
+  const bool fallback = params.side_cord_policy == SideCordPolicy::kFallback;
+  size_t full = 0;
+  auto enough = [&]() {
+    return fallback ? (full >= wanted || found.size() >= 2 * wanted) : found.size() >= wanted;
+  };
   const Clock::time_point sampling_start = Clock::now();
-  for (int it = 0; it < params.max_iterations && found.size() < wanted && count > 0; ++it) {
+  for (int it = 0; it < params.max_iterations && !enough() && count > 0; ++it) {
     if (out_of_time()) break;
     ++st.iterations;
     detail::shuffle(perm1, rng);
     detail::shuffle(perm2, rng);
     detail::shuffle(perm3, rng);
-    for (int j = 0; j < count && found.size() < wanted; ++j) {
+    for (int j = 0; j < count && !enough(); ++j) {
       if ((j & 63) == 0 && out_of_time()) break;
       ++st.triangles_sampled;
       const Eigen::Vector3d p1 = object.center + r1 * unit[perm1[j]];
@@ -86,6 +93,7 @@ std::vector<GraspRegion> explore_cords(const Mesh& mesh, double palm_width_m,
       if (why == ScanFailure::kNone || why == ScanFailure::kSideCord) ++st.sets_tried;
       if (region) {
         ++st.sets_valid;
+        if (side_cords_missed(*region) == 0) ++full;
         found.push_back(std::move(*region));
       }
     }

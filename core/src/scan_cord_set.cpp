@@ -67,7 +67,8 @@ std::optional<GraspRegion> scan_cord_set(const CordObject& object, const Eigen::
       return true;
     }
     if (!fc && why == FrontCordFailure::kNoContact &&
-        params.side_cord_policy == SideCordPolicy::kEmptyWhenMissed) {
+        (params.side_cord_policy == SideCordPolicy::kEmptyWhenMissed ||
+         params.side_cord_policy == SideCordPolicy::kFallback)) {
       slot.clear();  // empty Q_i: χ counts A(Q_0) for it (docs/algorithm.md §6 degenerate rule)
       return true;
     }

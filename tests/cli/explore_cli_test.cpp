@@ -43,7 +43,8 @@ TEST(ExploreCli, PrintsRankedRegionsAndWritesJson) {
   std::ifstream in(json_path);
   const nlohmann::json j = nlohmann::json::parse(in);
   EXPECT_EQ(j["seed"], 3);
-  EXPECT_EQ(j["stats"]["sets_valid"], 4);
+  EXPECT_GE(j["stats"]["sets_valid"], 4);  // default fallback policy: 4 full sets or 8 in all
+  EXPECT_LE(j["stats"]["sets_valid"], 8);
   const auto& regions = j["regions"];
   ASSERT_GE(regions.size(), 4u);
   double previous = 0.0;

@@ -222,7 +222,7 @@ TEST(ParamsJson, WrongTypeUnknownKeyAndUnknownEnumNameAreErrors) {
   j["side_cord_policy"] = "sometimes";
   EXPECT_EQ(read_error(j),
             "plan.json: parameters.cord.side_cord_policy: side-cord policy: unknown name "
-            "'sometimes' (allowed: discard, shrink, empty)");
+            "'sometimes' (allowed: discard, shrink, empty, fallback)");
   j = params_to_json(CordParams{});
   j["local_improvement"] = 1;
   EXPECT_NE(read_error(j).find("local_improvement: expected true or false"), std::string::npos);
@@ -262,7 +262,7 @@ void expect_names_round_trip(E (*parse)(const std::string&), std::initializer_li
 TEST(EnumNames, EveryEnumParsesItsNamesAndListsThemWhenItCannot) {
   expect_names_round_trip(parse_side_cord_policy,
                           {SideCordPolicy::kDiscardSet, SideCordPolicy::kShrink,
-                           SideCordPolicy::kEmptyWhenMissed});
+                           SideCordPolicy::kEmptyWhenMissed, SideCordPolicy::kFallback});
   expect_names_round_trip(parse_sphere_sequence,
                           {SphereSequence::kYershovaLaValle, SphereSequence::kFibonacci});
   expect_names_round_trip(parse_cord_construction,
@@ -284,6 +284,7 @@ TEST(EnumNames, TheCliNamesOfSideCordsAndQualityStay) {
   EXPECT_STREQ(to_string(SideCordPolicy::kEmptyWhenMissed), "empty");
   EXPECT_STREQ(to_string(SideCordPolicy::kDiscardSet), "discard");
   EXPECT_STREQ(to_string(SideCordPolicy::kShrink), "shrink");
+  EXPECT_STREQ(to_string(SideCordPolicy::kFallback), "fallback");
   EXPECT_STREQ(to_string(QualityMode::kSimox), "simox");
   EXPECT_STREQ(to_string(LengthUnits::kMillimeters), "mm");
 }

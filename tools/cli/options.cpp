@@ -96,8 +96,9 @@ void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
                   "(default: the hand's soft_finger_radius_m, 5 mm for the grippers)")
       ->check(number_in(0.0, 0.0499));
   add_enum_option(cmd, "--side-cords", &p.cord.side_cord_policy,
-                  "Cord: a scanned cord that fails: empty (missed object scores as empty), "
-                  "discard (the paper) or shrink (docs/algorithm.md §4)");
+                  "Cord: a scanned cord that fails: fallback (the paper's discard where the "
+                  "object allows it, else empty), discard, empty (missed cords score as empty "
+                  "polygons) or shrink (docs/algorithm.md §4)");
   add_enum_option(cmd, "--quality", &p.plan.quality.mode,
                   "textbook (real mu, eps = origin to hull) or simox (compat quirks, "
                   "docs/algorithm.md §8)");

@@ -32,12 +32,16 @@ enum class XorBackend {
 enum class SideCordPolicy {
   kDiscardSet,  ///< any failing or case-changing ±i cord discards the set
   kShrink,      ///< shrink n symmetrically to the last i whose ±i cords succeed
-  kEmptyWhenMissed,  ///< (default) a ±i guide triangle that holds no part of the
+  kEmptyWhenMissed,  ///< a ±i guide triangle that holds no part of the
                      ///< object (Case I "no contact": the scan swept past an object narrower
                      ///< than the palm) gives an empty polygon Q_i, which χ's degenerate rule
                      ///< scores A(Q_i ⊕ Q_0) = A(Q_0); any other failure or a case change still
                      ///< discards the set. n stays palm-width based, so such sets keep
                      ///< their size and rank behind sets whose cords all touch the object.
+  kFallback,  ///< (default) the paper's discard where the object allows it: sets whose cords
+              ///< all touch the object rank first (by χ); sets valid only with empty Q_i
+              ///< (as kEmptyWhenMissed) rank after them, and exploration keeps sampling until
+              ///< `sets` full sets or 2 × `sets` sets in all (docs/algorithm.md §4)
 };
 
 /// "yershova_lavalle", "fibonacci".
@@ -55,7 +59,7 @@ const char* to_string(XorBackend backend);
 /// Parses the names of to_string(XorBackend). @throws std::invalid_argument otherwise.
 XorBackend parse_xor_backend(const std::string& text);
 
-/// "discard", "shrink", "empty" (the CLI's --side-cords names).
+/// "discard", "shrink", "empty", "fallback" (the CLI's --side-cords names).
 const char* to_string(SideCordPolicy policy);
 /// Parses the names of to_string(SideCordPolicy). @throws std::invalid_argument otherwise.
 SideCordPolicy parse_side_cord_policy(const std::string& text);
@@ -82,7 +86,7 @@ struct CordParams {
   // Scanning (docs/algorithm.md §4)
   double scan_angle_rad = 0.034906585039886591;  ///< θ = 2° between neighbouring cords [rad]
   int max_cords_per_side = 200;    ///< safety cap on n (not in the paper; n ≈ 5–30 in practice)
-  SideCordPolicy side_cord_policy = SideCordPolicy::kEmptyWhenMissed;  ///< see SideCordPolicy
+  SideCordPolicy side_cord_policy = SideCordPolicy::kFallback;  ///< see SideCordPolicy
 
   // Algorithm 1 (docs/algorithm.md §5)
   SphereSequence sphere_sequence = SphereSequence::kYershovaLaValle;

@@ -28,4 +28,8 @@ struct GraspRegion {
   bool from_local_improvement = false;  ///< found by local improvement (docs/algorithm.md §5)
 };
 
+/// Number of rotated cords T^{±i} that missed the object (empty front cords, scored as empty
+/// polygons Q_i; docs/algorithm.md §4). 0: every cord of the set touches the object.
+int side_cords_missed(const GraspRegion& region);
+
 }  // namespace cordgrasp

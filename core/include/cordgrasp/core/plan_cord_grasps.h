@@ -30,8 +30,9 @@ PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand
 /// Processing order of the cord planner: regions in ascending χ, except that sets shrunk by
 /// SideCordPolicy::kShrink (n below cords_per_side(), docs/algorithm.md §4) come after every full
 /// set. Shrunk sets have fewer, less tilted cords, hence a lower χ for reasons unrelated to the
-/// object's shape (on the long cylinder they rank oblique corner sets first). With the other
-/// policies n is never shrunk and this is plain ascending χ.
+/// object's shape (on the long cylinder they rank oblique corner sets first). Likewise under
+/// SideCordPolicy::kFallback the sets with missed (empty) cords come after every set whose
+/// cords all touch the object. With kDiscardSet and kEmptyWhenMissed this is plain ascending χ.
 std::vector<int> cord_region_order(const std::vector<GraspRegion>& regions, double palm_width_m,
                                    const CordParams& cord);
 
