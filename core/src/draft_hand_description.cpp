@@ -363,7 +363,8 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
         if (std::abs(c2) > std::abs(c)) c = c2;
       }
       if (std::abs(c) < kMinClosingCosine) continue;
-      const double speed = (c > 0 ? 1.0 : -1.0) * (joint.type == JointType::kPrismatic ? 0.1 : 1.0);
+      const double speed =
+          (c > 0 ? 1.0 : -1.0) * (joint.type == JointType::kPrismatic ? 0.1 : 1.0);
       actor.joints.push_back({j, speed});
       worst = std::min(worst, std::abs(c));
       listed << (actor.joints.size() > 1 ? ", " : "") << joint.name << (c > 0 ? " +" : " -");
@@ -484,7 +485,7 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   guess("gcp", "'" + hand.links[palm].name + "' xyz " + vec(hand.gcp.X_LG.translation()),
         best_problems == 0 ? 0.7 : 0.3,
         "between thumb tip and fingertips, " + num((best_h - palm_top) * 1000) +
-            " mm in front of the palm");
+            " mm from the front of the palm's bounds along the palm normal");
   {
     int nonzero = 0;
     for (Eigen::Index j = 0; j < q_open.size(); ++j) nonzero += q_open[j] != 0.0;
@@ -509,7 +510,8 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   fs::path rel = urdf_rel.lexically_relative(out_dir);
   // Relative only when the two share more than the root directory.
   if (!rel.empty() && urdf_rel.begin() != urdf_rel.end() &&
-      std::next(urdf_rel.begin()) != urdf_rel.end() && std::next(out_dir.begin()) != out_dir.end() &&
+      std::next(urdf_rel.begin()) != urdf_rel.end() &&
+      std::next(out_dir.begin()) != out_dir.end() &&
       *std::next(urdf_rel.begin()) != *std::next(out_dir.begin()))
     rel.clear();
   y << "# cordgrasp hand description, format 1 (drafted by `cordgrasp hand init`; check it, see\n"
