@@ -63,7 +63,7 @@ class Description {
     static const std::set<std::string> kKeys = {"format",    "name",        "urdf",
                                                 "gcp",       "preshape",    "actors",
                                                 "couplings", "thumb_links", "palm_width_m",
-                                                "soft_finger_radius_m"};
+                                                "soft_finger_radius_m", "palm_normal"};
     for (const auto& kv : root_) {
       const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
       if (!kKeys.count(key)) error(kv.first, "unknown key " + in_quotes(key));
@@ -137,6 +137,27 @@ void read_gcp(HandModel& hand, const Description& d) {
     if (key != "link" && key != "xyz" && key != "rpy")
       d.error(kv.first, "unknown key " + in_quotes("gcp." + key));
   }
+}
+
+void read_palm_normal(HandModel& hand, const Description& d) {
+  const YAML::Node pn = d.root()["palm_normal"];
+  if (!pn) return;
+  d.require_map(pn, "palm_normal");
+  for (const auto& kv : pn) {
+    const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
+    if (key != "link" && key != "axis")
+      d.error(kv.first, "unknown key " + in_quotes("palm_normal." + key));
+  }
+  const std::string link = d.text(pn["link"], "palm_normal.link");
+  PalmNormal normal;
+  normal.link = find_link(hand, link);
+  if (normal.link < 0)
+    d.error(pn["link"], "palm_normal link " + in_quotes(link) + " not found in the URDF");
+  if (!pn["axis"]) d.error(pn, "palm_normal needs 'axis: [x, y, z]'");
+  const Eigen::Vector3d axis = d.vec3(pn["axis"], "palm_normal.axis");
+  if (!(axis.norm() > 1e-9)) d.error(pn["axis"], "palm_normal.axis is the zero vector");
+  normal.n_L = axis.normalized();
+  hand.palm_normal = normal;
 }
 
 void read_couplings(HandModel& hand, const Description& d) {
@@ -283,6 +304,7 @@ HandModel load_hand(const std::string& name_or_path, const HandLoadOptions& opti
   read_preshape(hand, d);
   read_actors(hand, d);
   read_thumb_links(hand, d);
+  read_palm_normal(hand, d);
   if (const YAML::Node w = d.root()["palm_width_m"]) {
     const double v = d.number(w, "palm_width_m");
     if (!(v > 0.0 && v < 1.0)) d.error(w, "palm_width_m must be in (0, 1) m");

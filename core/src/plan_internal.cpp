@@ -1,5 +1,6 @@
 #include "plan_internal.h"
 
+#include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/skewness.h"
 
@@ -55,7 +56,14 @@ bool attempt_grasp(const HandModel& hand, HandObjectCollider& collider, const Pl
   grasp.contacts = fr.contacts;
   grasp.force_closure = true;
   grasp.epsilon = quality.epsilon;
-  grasp.alpha_rad = skewness_alpha_rad(fr.X_OG.linear().col(2), ctx.principal_axis_O);
+  grasp.alpha_approach_rad =
+      skewness_alpha_rad(fr.X_OG.linear().col(2), ctx.principal_axis_O);
+  grasp.alpha_rad = grasp.alpha_approach_rad;
+  if (hand.palm_normal) {
+    const auto X_OL = link_poses(hand, fr.q, fr.X_OB);
+    const Eigen::Vector3d n_O = X_OL[hand.palm_normal->link].linear() * hand.palm_normal->n_L;
+    grasp.alpha_rad = skewness_alpha_rad(n_O, ctx.principal_axis_O);
+  }
   grasp.times.finger_s = finger_s;
   grasp.times.quality_s = quality_s;
   ++stats.force_closure;

@@ -67,21 +67,15 @@ TEST(HandDataset, EveryDescriptionShippedInAssetsLoads) {
   for (const auto& f : files) {
     SCOPED_TRACE(f);
     const HandModel h = load_hand(f);
-    test::expect_gcp_points_into_grasp(h);
-    test::expect_actors_close_towards_gcp(h, kClosingStep, kMinClosing_m);
+    test::expect_hand_conventions(h, kClosingStep, kMinClosing_m);
+    EXPECT_TRUE(h.palm_normal.has_value()) << "every shipped hand sets palm_normal";
   }
 }
 
-TEST(HandDataset, GcpPointsFromThePalmIntoTheGraspOnEveryHand) {
+TEST(HandDataset, GcpPalmNormalAndActorsFollowTheConventionsOnEveryHand) {
   CORDGRASP_REQUIRE_SHARED_DATA();
   for (const ManifestHand& m : kManifestHands)
-    test::expect_gcp_points_into_grasp(load_hand(m.name));
-}
-
-TEST(HandDataset, PositiveActorMotionClosesEveryFingerTowardsTheGcp) {
-  CORDGRASP_REQUIRE_SHARED_DATA();
-  for (const ManifestHand& m : kManifestHands)
-    test::expect_actors_close_towards_gcp(load_hand(m.name), kClosingStep, kMinClosing_m);
+    test::expect_hand_conventions(load_hand(m.name), kClosingStep, kMinClosing_m);
 }
 
 TEST(HandDataset, SahGcpInPreshapeIsTheSimoxRightArmGcp) {

@@ -12,6 +12,7 @@
 #include "cordgrasp/core/hand_fingers.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
+#include "cordgrasp/core/hand_conventions.h"
 #include "hand_checks.h"
 #include "test_paths.h"
 
@@ -389,9 +390,34 @@ TEST(ShippedHands, ParallelGripperOpensTenCentimetresWithMimicFinger) {
 TEST(ShippedHands, GcpPointsIntoTheGraspAndActorsClose) {
   for (const char* name : {"cordgrasp_sah", "parallel_gripper"}) {
     const HandModel h = load_hand(name);
-    test::expect_gcp_points_into_grasp(h);
-    test::expect_actors_close_towards_gcp(h, 0.3, 0.003);
+    test::expect_hand_conventions(h, 0.3, 0.003);
+    EXPECT_TRUE(h.palm_normal.has_value()) << name;
   }
+}
+
+TEST(ShippedHands, PalmNormalIsReadAsAUnitVectorOnItsLink) {
+  const HandModel h = load_hand("cordgrasp_sah");
+  ASSERT_TRUE(h.palm_normal.has_value());
+  EXPECT_EQ(h.links[h.palm_normal->link].name, "palm");
+  EXPECT_NEAR(h.palm_normal->n_L.norm(), 1.0, 1e-12);
+  EXPECT_TRUE(h.palm_normal->n_L.isApprox(Eigen::Vector3d::UnitX()));
+}
+
+TEST(HandConventions, FlippedPalmNormalIsReported) {
+  HandModel h = load_hand("cordgrasp_sah");
+  EXPECT_TRUE(check_hand_conventions(h).empty());
+  h.palm_normal->n_L = -h.palm_normal->n_L;
+  const auto problems = check_hand_conventions(h);
+  ASSERT_FALSE(problems.empty());
+  EXPECT_NE(problems.front().find("palm normal"), std::string::npos) << problems.front();
+}
+
+TEST(HandConventions, ReversedActorIsReported) {
+  HandModel h = load_hand("cordgrasp_sah");
+  for (auto& e : h.actors[1].joints) e.direction_speed = -e.direction_speed;
+  const auto problems = check_hand_conventions(h);
+  ASSERT_FALSE(problems.empty());
+  EXPECT_NE(problems.front().find("actor 'index'"), std::string::npos) << problems.front();
 }
 
 }  // namespace

@@ -149,8 +149,8 @@ TEST(BenchCsv, RowsRoundTripIncludingQuotedErrors) {
   EXPECT_EQ(text.substr(0, text.find('\n')),
             "attempt,object,object_path,hand,planner,repeat,seed,status,error,first_fc_s,"
             "exploration_s,finger_s,quality_s,total_s,regions,regions_processed,"
-            "finger_attempts,grasps,timed_out,epsilon,alpha_rad,chi_m2,region_rank,sim_lift,"
-            "sim_shake,sim_gravity6,sim_outcome,sim_wall_s,object_scale");
+            "finger_attempts,grasps,timed_out,epsilon,alpha_rad,alpha_approach_rad,chi_m2,"
+            "region_rank,sim_lift,sim_shake,sim_gravity6,sim_outcome,sim_wall_s,object_scale");
   const auto rows = parse_bench_csv(text, "test");
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(bench_row_cells(rows[0]), bench_row_cells(ok));

@@ -63,6 +63,7 @@ PlanDocument sample_plan(const HandModel& hand) {
   g.force_closure = true;
   g.epsilon = 0.0123;
   g.alpha_rad = 0.2;
+  g.alpha_approach_rad = 0.3;
   g.chi_m2 = 1.5e-4;
   g.region_rank = 4;
   g.times.finger_s = 0.004;
@@ -106,6 +107,7 @@ TEST(PlanJson, RoundTripsEveryField) {
   EXPECT_TRUE(b.contacts[0].n_O.isApprox(a.contacts[0].n_O, 1e-15));
   EXPECT_EQ(b.epsilon, a.epsilon);
   EXPECT_EQ(b.alpha_rad, a.alpha_rad);
+  EXPECT_EQ(b.alpha_approach_rad, a.alpha_approach_rad);
   EXPECT_EQ(b.chi_m2, a.chi_m2);
   EXPECT_EQ(b.region_rank, a.region_rank);
   EXPECT_EQ(b.times.finger_s, a.times.finger_s);

@@ -60,7 +60,7 @@ double mean_cord_alpha(const HandModel& hand, const Mesh& mesh, HandObjectCollid
     const PlanResult plan =
         plan_cord_grasps(mesh, hand, collider, cord_params(run), plan_params(run));
     EXPECT_FALSE(plan.grasps.empty()) << "seed " << run;
-    if (!plan.grasps.empty()) alpha += plan.grasps.front().alpha_rad / kRuns;
+    if (!plan.grasps.empty()) alpha += plan.grasps.front().alpha_approach_rad / kRuns;
   }
   return alpha;
 }
@@ -91,7 +91,7 @@ TEST(GenericPlanner, HasZeroSkewnessOnAPolygonalCylinder) {
   params.grasps = 10;
   const PlanResult plan = plan_generic_grasps(cylinder, hand, *collider, params);
   ASSERT_EQ(plan.grasps.size(), 10u);
-  for (const Grasp& g : plan.grasps) EXPECT_NEAR(g.alpha_rad, 0.0, 1e-6);
+  for (const Grasp& g : plan.grasps) EXPECT_NEAR(g.alpha_approach_rad, 0.0, 1e-6);
 }
 
 TEST(CordPlanner, SameSeedGivesTheSameGrasp) {

@@ -50,7 +50,7 @@ TEST(PlanCordGrasps, FindsForceClosureOnHandMadeCylinderRegions) {
   EXPECT_EQ(g.times.exploration_s, 0.25);
   EXPECT_GE(g.contacts.size(), 3u);
   // Approach along −x, perpendicular to the cylinder axis z: α = 0.
-  EXPECT_NEAR(g.alpha_rad, 0.0, 1e-9);
+  EXPECT_NEAR(g.alpha_approach_rad, 0.0, 1e-9);
   EXPECT_TRUE(g.X_OG.linear().col(2).isApprox(-Eigen::Vector3d::UnitX(), 1e-12));
   EXPECT_EQ(g.q.size(), static_cast<Eigen::Index>(hand.joints.size()));
 }

@@ -151,7 +151,7 @@ Stats stats_of(std::vector<double> v) {
 // "| 10/10 | 100 % | ..." cells of one group of rows.
 std::string summary_cells(const std::vector<const BenchRow*>& rows) {
   int ok = 0, no_grasp = 0, error = 0, simulated = 0, held = 0;
-  std::vector<double> first_fc, total, alpha, epsilon, processed;
+  std::vector<double> first_fc, total, alpha, alpha_approach, epsilon, processed;
   for (const BenchRow* r : rows) {
     ok += r->status == "ok";
     no_grasp += r->status == "no_grasp";
@@ -159,6 +159,7 @@ std::string summary_cells(const std::vector<const BenchRow*>& rows) {
     if (r->status == "ok") {
       if (r->first_fc_s) first_fc.push_back(*r->first_fc_s);
       if (r->alpha_rad) alpha.push_back(*r->alpha_rad);
+      if (r->alpha_approach_rad) alpha_approach.push_back(*r->alpha_approach_rad);
       if (r->epsilon) epsilon.push_back(*r->epsilon);
       if (r->region_rank) processed.push_back(r->regions_processed);
     }
@@ -170,7 +171,7 @@ std::string summary_cells(const std::vector<const BenchRow*>& rows) {
   }
   const int n = static_cast<int>(rows.size());
   const Stats t = stats_of(first_fc), a = stats_of(alpha), e = stats_of(epsilon),
-              tt = stats_of(total);
+              tt = stats_of(total), aa = stats_of(alpha_approach);
   auto or_dash = [](bool have, const std::string& s) { return have ? s : std::string("–"); };
   std::ostringstream out;
   out << "| " << n << " | " << ok << " (" << fixed(n ? 100.0 * ok / n : 0.0, 0) << " %) | "
@@ -178,6 +179,8 @@ std::string summary_cells(const std::vector<const BenchRow*>& rows) {
       << or_dash(t.n > 0, fixed(t.mean, 3)) << " | " << or_dash(t.n > 0, fixed(t.sd, 3)) << " | "
       << or_dash(tt.n > 0, fixed(tt.mean, 3)) << " | " << or_dash(a.n > 0, fixed(a.mean, 3))
       << " | " << or_dash(a.n > 0, fixed(a.sd, 3)) << " | "
+      << or_dash(aa.n > 0, fixed(aa.mean, 3)) << " | " << or_dash(aa.n > 0, fixed(aa.sd, 3))
+      << " | "
       << or_dash(e.n > 0, format_number(e.mean, "%.3g")) << " | "
       << or_dash(simulated > 0, std::to_string(held) + "/" + std::to_string(simulated) + " (" +
                                     fixed(simulated ? 100.0 * held / simulated : 0.0, 0) +
@@ -188,8 +191,9 @@ std::string summary_cells(const std::vector<const BenchRow*>& rows) {
 
 const char* kSummaryHeader =
     "| attempts | FC grasp found | no grasp | error | first FC median [s] | first FC mean [s] "
-    "| first FC sd [s] | total mean [s] | α mean [rad] | α sd [rad] | ε mean | sim held |\n";
-const char* kSummaryRule = "|---|---|---|---|---|---|---|---|---|---|---|---|";
+    "| first FC sd [s] | total mean [s] | α mean [rad] | α sd [rad] | α approach mean [rad] "
+    "| α approach sd [rad] | ε mean | sim held |\n";
+const char* kSummaryRule = "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|";
 
 std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -273,7 +277,8 @@ const std::vector<std::string>& bench_csv_columns() {
       "repeat",       "seed",            "status",        "error",         "first_fc_s",
       "exploration_s", "finger_s",       "quality_s",     "total_s",       "regions",
       "regions_processed", "finger_attempts", "grasps",   "timed_out",     "epsilon",
-      "alpha_rad",    "chi_m2",          "region_rank",   "sim_lift",      "sim_shake",
+      "alpha_rad",    "alpha_approach_rad", "chi_m2",     "region_rank",   "sim_lift",
+      "sim_shake",
       "sim_gravity6", "sim_outcome",     "sim_wall_s",    "object_scale"};
   return kColumns;
 }
@@ -306,6 +311,7 @@ std::vector<std::string> bench_row_cells(const BenchRow& r) {
           r.timed_out ? "1" : "0",
           optional_number(r.epsilon),
           optional_number(r.alpha_rad),
+          optional_number(r.alpha_approach_rad),
           optional_number(r.chi_m2),
           r.region_rank ? std::to_string(*r.region_rank) : "",
           r.sim_lift,
@@ -363,14 +369,15 @@ std::vector<BenchRow> parse_bench_csv(const std::string& text, const std::string
     r.timed_out = c[18] == "1";
     r.epsilon = parse_optional_double(c[19], where);
     r.alpha_rad = parse_optional_double(c[20], where);
-    r.chi_m2 = parse_optional_double(c[21], where);
-    if (!c[22].empty()) r.region_rank = static_cast<int>(parse_integer(c[22], where));
-    r.sim_lift = c[23];
-    r.sim_shake = c[24];
-    r.sim_gravity6 = c[25];
-    r.sim_outcome = c[26];
-    r.sim_wall_s = parse_optional_double(c[27], where);
-    r.object_scale = parse_double(c[28], where);
+    r.alpha_approach_rad = parse_optional_double(c[21], where);
+    r.chi_m2 = parse_optional_double(c[22], where);
+    if (!c[23].empty()) r.region_rank = static_cast<int>(parse_integer(c[23], where));
+    r.sim_lift = c[24];
+    r.sim_shake = c[25];
+    r.sim_gravity6 = c[26];
+    r.sim_outcome = c[27];
+    r.sim_wall_s = parse_optional_double(c[28], where);
+    r.object_scale = parse_double(c[29], where);
     rows.push_back(std::move(r));
   }
   return rows;
@@ -459,6 +466,7 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
     const Grasp& g = plan.grasps.front();
     row.epsilon = g.epsilon;
     row.alpha_rad = g.alpha_rad;
+    row.alpha_approach_rad = g.alpha_approach_rad;
     row.chi_m2 = g.chi_m2;
     row.region_rank = g.region_rank;
     result.first_grasp = g;
@@ -544,7 +552,8 @@ std::string bench_summary_markdown(const std::vector<BenchRow>& rows,
   if (!info.shard.empty()) out << " (shard " << info.shard << ")";
   out << "\n- physics tests on each attempt's first grasp: "
       << (info.tests.empty() ? "none" : info.tests) << "\n";
-  out << "- times are wall-clock seconds; α (skewness, docs/algorithm.md §9) and ε of the "
+  out << "- times are wall-clock seconds; α (skewness, docs/algorithm.md §9; of the palm "
+         "normal, α approach of the GCP z axis) and ε of the "
          "first force-closure grasp; first FC, α and ε over the attempts that found a grasp; sim held = first "
          "grasps that held through every test / first grasps simulated.\n\n";
 

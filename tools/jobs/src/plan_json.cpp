@@ -195,6 +195,7 @@ nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand) {
          {"force_closure", g.force_closure},
          {"epsilon", g.epsilon},
          {"alpha_rad", g.alpha_rad},
+         {"alpha_approach_rad", g.alpha_approach_rad},
          {"chi_m2", optional_json(g.chi_m2)},
          {"region_rank", g.region_rank ? nlohmann::json(*g.region_rank) : nlohmann::json(nullptr)},
          {"region", g.region ? region_to_json(*g.region) : nlohmann::json(nullptr)},
@@ -310,6 +311,11 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
       grasp.force_closure = g.value("force_closure", false);
       grasp.epsilon = g.value("epsilon", 0.0);
       grasp.alpha_rad = g.value("alpha_rad", 0.0);
+      // Plans written before the palm normal existed hold one α, of the GCP z axis.
+      grasp.alpha_approach_rad =
+          g.contains("alpha_approach_rad")
+              ? finite_number(g.at("alpha_approach_rad"), where + ".alpha_approach_rad")
+              : grasp.alpha_rad;
       if (g.contains("chi_m2") && !g["chi_m2"].is_null()) grasp.chi_m2 = g["chi_m2"].get<double>();
       if (g.contains("region_rank") && !g["region_rank"].is_null())
         grasp.region_rank = g["region_rank"].get<int>();

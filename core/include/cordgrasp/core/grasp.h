@@ -33,7 +33,10 @@ struct Grasp {
   std::vector<Contact> contacts;
   bool force_closure = false;
   double epsilon = 0.0;            ///< ε quality (docs/algorithm.md §8), in the chosen mode
-  double alpha_rad = 0.0;          ///< skewness α (docs/algorithm.md §9) [rad], in [0, π/4]
+  /// Skewness α (docs/algorithm.md §9) [rad], in [0, π/4], of the hand's palm normal
+  /// (HandModel::palm_normal; the GCP z axis for a hand without one).
+  double alpha_rad = 0.0;
+  double alpha_approach_rad = 0.0;  ///< skewness α of the GCP z axis (approach) [rad]
   std::optional<int> region_rank;  ///< cord planner: rank of the region (0 = lowest χ)
   std::optional<double> chi_m2;    ///< cord planner: χ of that region [m²]
   std::optional<GraspRegion> region;  ///< cord planner: the region itself (cords, P1, P_l, P_r)

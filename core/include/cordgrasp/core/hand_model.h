@@ -79,6 +79,13 @@ struct GraspCenterPoint {
   Eigen::Isometry3d X_LG = Eigen::Isometry3d::Identity();  ///< GCP frame in that link's frame
 };
 
+/// Palm axis (docs/hand-description.md): a unit vector fixed in a link, pointing from the palm
+/// towards the fingers' closing region; the "axis that points from the palm" of paper Eq. (2).
+struct PalmNormal {
+  int link = -1;                                     ///< HandModel link index
+  Eigen::Vector3d n_L = Eigen::Vector3d::UnitZ();    ///< unit vector in that link's frame
+};
+
 /// A hand: URDF kinematics and geometry plus the grasping description (GCP, preshape, actors).
 /// Joint vectors (`q`) have one entry per element of `joints`; fixed joints' entries are ignored.
 struct HandModel {
@@ -93,6 +100,7 @@ struct HandModel {
   Eigen::VectorXd preshape;      ///< open configuration, one entry per joint
   std::vector<Actor> actors;     ///< closing fingers
   std::vector<int> thumb_links;  ///< links of the thumb (roll calibration, docs/algorithm.md §7.1)
+  std::optional<PalmNormal> palm_normal;  ///< palm axis for α (Eq. (2)); none: GCP z
   std::optional<double> palm_width_m;  ///< W_palm override (docs/algorithm.md §4), else measured
   /// Default contact patch radius of this hand's pads [m] (ContactModel::soft_finger_radius_m;
   /// planner and physics, unless --soft-finger-radius is given). 0: point contacts. Two-finger

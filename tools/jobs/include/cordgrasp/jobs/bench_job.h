@@ -82,7 +82,8 @@ struct BenchRow {
   int grasps = 0;             ///< force-closure grasps found
   bool timed_out = false;
   std::optional<double> epsilon;    ///< first grasp
-  std::optional<double> alpha_rad;  ///< first grasp
+  std::optional<double> alpha_rad;  ///< first grasp, palm normal (Grasp::alpha_rad)
+  std::optional<double> alpha_approach_rad;  ///< first grasp, GCP z axis
   std::optional<double> chi_m2;     ///< first grasp (cord)
   std::optional<int> region_rank;   ///< first grasp (cord; 0 = lowest χ)
   std::string sim_lift, sim_shake, sim_gravity6;  ///< phase outcome; "" = not simulated

@@ -15,7 +15,9 @@
 //             object frame), gcp_pose: {same, GCP in the object frame},
 //             joints: {name: value} (after closing), preshape_joints: {name: value},
 //             contacts: [{link, point_m, normal}] (object frame, normal out of the object),
-//             force_closure, epsilon, alpha_rad, chi_m2 (null: generic), region_rank (null),
+//             force_closure, epsilon, alpha_rad (α of the palm normal; GCP z for a hand
+//             without one), alpha_approach_rad (α of the GCP z axis; when absent, as
+//             alpha_rad), chi_m2 (null: generic), region_rank (null),
 //             region (null: generic; layout of region_json.h: cords, P1, P_l, P_r, ...),
 //             timings_s: {exploration, finger, quality}}]
 #include <cstdint>

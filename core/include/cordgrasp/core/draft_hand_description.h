@@ -1,0 +1,38 @@
+#pragma once
+// Drafting a hand description from a URDF alone (docs/hand-description.md, "Drafting a
+// description"): fingers, closing joints and signs, thumb, palm normal, GCP, preshape.
+#include <string>
+#include <vector>
+
+#include "cordgrasp/core/hand_description.h"
+#include "cordgrasp/core/hand_model.h"
+
+namespace cordgrasp {
+
+/// One guess of the draft and how sure it is.
+struct DraftGuess {
+  std::string what;         ///< "thumb", "palm normal", "actor index", ...
+  std::string value;        ///< the guess, as text
+  double confidence = 0.0;  ///< 0 (a coin toss) .. 1 (sure)
+  std::string why;          ///< the evidence, one short phrase
+};
+
+/// A drafted description: the hand as it would load, its YAML and what was guessed.
+struct HandDraft {
+  HandModel hand;                     ///< URDF plus the drafted description
+  std::string yaml;                   ///< the description file (format 1)
+  std::vector<DraftGuess> guesses;    ///< one per guess, in YAML order
+  std::vector<std::string> problems;  ///< check_hand_conventions of the draft (empty: all hold)
+};
+
+/// Drafts a hand description for the URDF at `urdf_path`, to be written to `out_path` (the
+/// YAML's `urdf:` is relative to its directory). Fingers are the chains below the palm that end
+/// in one moving leaf; a joint closes its finger when it moves the fingertip mostly along the
+/// palm normal (the thumb: towards the other fingertips), with that sign; the thumb is the
+/// finger farthest from the others; the palm normal is the fingers' flexion direction; the GCP
+/// lies between the thumb tip and the other fingertips with +z along the palm normal.
+/// @throws InputError as load_hand for the URDF, or when no finger is found.
+HandDraft draft_hand_description(const std::string& urdf_path, const std::string& out_path,
+                                 const HandLoadOptions& options = {});
+
+}  // namespace cordgrasp

@@ -1,0 +1,127 @@
+// Hand descriptions drafted from the URDF alone (draft_hand_description) load, follow the
+// conventions and plan force-closure grasps of the shipped box and mug.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <iostream>
+#include <set>
+
+#include "cordgrasp/collision/bullet_hand_collider.h"
+#include "cordgrasp/core/atomic_file.h"
+#include "cordgrasp/core/draft_hand_description.h"
+#include "cordgrasp/core/hand_conventions.h"
+#include "cordgrasp/core/hand_io.h"
+#include "cordgrasp/core/mesh_io.h"
+#include "cordgrasp/core/plan_cord_grasps.h"
+#include "test_paths.h"
+
+namespace cordgrasp {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Drafts a description for `urdf`, writes it to a temp file and loads it back.
+HandModel draft_and_load(const std::string& urdf, const std::string& name, HandDraft* out) {
+  const fs::path dir = fs::temp_directory_path() / "cordgrasp_draft_test";
+  fs::create_directories(dir);
+  const std::string path = (dir / (name + ".yaml")).string();
+  HandDraft draft = draft_hand_description(urdf, path);
+  write_file_atomically(path, draft.yaml);
+  HandModel hand = load_hand(path);
+  if (out) *out = std::move(draft);
+  return hand;
+}
+
+/// The cord planner finds a force-closure grasp of the shipped box and mug.
+void expect_plans_box_and_mug(const HandModel& hand) {
+  for (const char* object : {"box", "mug"}) {
+    const Mesh mesh = load_mesh(test::source_dir() + "/assets/objects/" + object + ".obj");
+    auto collider = make_bullet_hand_collider(hand, mesh);
+    CordParams cord;
+    PlanParams plan;
+    plan.time_limit_s = 20.0;
+    plan.quality.contact.soft_finger_radius_m = hand.soft_finger_radius_m;  // as `plan` does
+    const PlanResult result = plan_cord_grasps(mesh, hand, *collider, cord, plan);
+    ASSERT_FALSE(result.grasps.empty())
+        << hand.name << " on " << object << ": " << result.stats.attempts << " attempts, "
+        << result.stats.no_contact << " no contact, " << result.stats.one_contact
+        << " one contact, " << result.stats.not_force_closure << " not FC";
+    EXPECT_TRUE(result.grasps.front().force_closure);
+  }
+}
+
+std::set<std::string> actor_joints(const HandModel& h) {
+  std::set<std::string> out;
+  for (const Actor& a : h.actors)
+    for (const auto& e : a.joints)
+      out.insert(h.joints[e.joint].name + (e.direction_speed > 0 ? " +" : " -"));
+  return out;
+}
+
+/// Prints where the draft differs from the shipped description (for the notes).
+void print_comparison(const HandModel& shipped, const HandModel& draft) {
+  const auto a = actor_joints(shipped), b = actor_joints(draft);
+  std::cout << shipped.name << ": actors " << shipped.actors.size() << " shipped / "
+            << draft.actors.size() << " drafted;";
+  for (const auto& j : a)
+    if (!b.count(j)) std::cout << " only shipped: " << j << ";";
+  for (const auto& j : b)
+    if (!a.count(j)) std::cout << " only drafted: " << j << ";";
+  const auto thumb = [](const HandModel& h) {
+    return h.thumb_links.empty() ? std::string("-") : h.links[h.thumb_links.front()].name;
+  };
+  std::cout << " thumb " << thumb(shipped) << " / " << thumb(draft) << "\n";
+}
+
+TEST(DraftHand, NeverSeenThreeDigitClawLoadsFollowsTheConventionsAndPlans) {
+  HandDraft draft;
+  const HandModel hand = draft_and_load(
+      test::test_data("hands/three_digit_claw/three_digit_claw.urdf"), "three_digit_claw",
+      &draft);
+  EXPECT_TRUE(draft.problems.empty()) << draft.problems.front();
+  EXPECT_TRUE(check_hand_conventions(hand).empty());
+  ASSERT_EQ(hand.actors.size(), 3u);
+  ASSERT_FALSE(hand.thumb_links.empty());
+  EXPECT_EQ(hand.links[hand.thumb_links.front()].name, "opposer_seg1");
+  // The opposer's knuckle closes with negative motion (its axis is reversed); the digits'
+  // hinges follow by <mimic>, so each actor lists its knuckle only.
+  for (const Actor& a : hand.actors) {
+    ASSERT_EQ(a.joints.size(), 1u) << a.name;
+    const Joint& j = hand.joints[a.joints[0].joint];
+    EXPECT_NE(j.name.find("_knuckle"), std::string::npos);
+    EXPECT_EQ(a.joints[0].direction_speed < 0, j.name == "opposer_knuckle") << j.name;
+  }
+  ASSERT_TRUE(hand.palm_normal.has_value());
+  EXPECT_TRUE(hand.palm_normal->n_L.isApprox(Eigen::Vector3d::UnitZ(), 1e-6))
+      << hand.palm_normal->n_L.transpose();
+  EXPECT_GE(draft.guesses.size(), 5u);
+  expect_plans_box_and_mug(hand);
+}
+
+TEST(DraftHand, ShippedPrimitiveHandsDraftsPlan) {
+  for (const char* name : {"cordgrasp_sah", "parallel_gripper"}) {
+    const HandModel shipped = load_hand(name);
+    HandDraft draft;
+    const HandModel hand = draft_and_load(shipped.urdf_path, name, &draft);
+    for (const auto& p : draft.problems) ADD_FAILURE() << p;
+    print_comparison(shipped, hand);
+    expect_plans_box_and_mug(hand);
+  }
+}
+
+TEST(DraftHandDataset, EveryStagedHandDraftsAndPlans) {
+  CORDGRASP_REQUIRE_SHARED_DATA();
+  for (const char* name : {"schunk_sah", "icub_right_hand", "armar3_right_hand", "allegro_right",
+                           "panda_hand", "barrett_bh282"}) {
+    SCOPED_TRACE(name);
+    const HandModel shipped = load_hand(name);
+    HandDraft draft;
+    const HandModel hand = draft_and_load(shipped.urdf_path, name, &draft);
+    for (const auto& p : draft.problems) ADD_FAILURE() << p;
+    print_comparison(shipped, hand);
+    expect_plans_box_and_mug(hand);
+  }
+}
+
+}  // namespace
+}  // namespace cordgrasp
