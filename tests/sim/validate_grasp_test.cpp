@@ -75,6 +75,27 @@ TEST(ValidateGrasp, ParallelGripperPinchingABoxAtItsCentreHoldsThroughEveryTest)
   EXPECT_NEAR(r.object.mass_kg, SimParams{}.density_kgm3 * std::pow(kBoxSide_m, 3), 1e-12);
 }
 
+TEST(ValidateGrasp, SqueezeShiftLimitRejectsTheGraspInCloseBeforeTheTests) {
+  // The centre pinch hardly moves the box while closing: a limit below its shift rejects it,
+  // one above it (and the default, off) lets it through.
+  const SimResult free = validate_grasp(box(), gripper(), centre_pinch(), gripper_params());
+  const double shift_m = free.phase("close")->translation_m;
+  EXPECT_FALSE(free.rejected_in_close);
+  SimParams params = gripper_params();
+  params.squeeze_shift_limit_m = 0.5 * shift_m + 1e-12;
+  const SimResult r = validate_grasp(box(), gripper(), centre_pinch(), params);
+  EXPECT_TRUE(r.rejected_in_close);
+  EXPECT_EQ(r.outcome, Outcome::kSlipped);
+  EXPECT_EQ(r.phase("close")->outcome, Outcome::kSlipped);
+  EXPECT_EQ(r.phase("lift")->outcome, Outcome::kNotRun);
+  EXPECT_EQ(r.phase("lift")->steps, 0);
+  params.squeeze_shift_limit_m = 2.0 * shift_m + 1e-6;
+  const SimResult ok = validate_grasp(box(), gripper(), centre_pinch(), params,
+                                      sim_tests_from_string("lift"));
+  EXPECT_FALSE(ok.rejected_in_close);
+  EXPECT_EQ(ok.outcome, Outcome::kHeld);
+}
+
 TEST(ValidateGrasp, ThoroughProtocolHoldsTheCentrePinchThroughItsFullPhases) {
   const SimParams params = gripper_params(Protocol::kThorough);
   const SimResult r = validate_grasp(box(), gripper(), centre_pinch(), params);

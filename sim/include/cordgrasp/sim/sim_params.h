@@ -218,6 +218,9 @@ struct SimParams {
   double drop_distance_m = 0.10;     ///< a phase stops early once the object is this far off
   /// Settle shift beyond which the preshape overlaps the object (preshape_overlap) [m].
   double settle_shift_tolerance_m = 1e-3;
+  /// Early rejection: a grasp whose object moved farther than this from its planned pose in
+  /// the hand while closing is slipped in close, before lift and shake (0: off) [m].
+  double squeeze_shift_limit_m = 0.0;
 
   // --- Tracing -----------------------------------------------------------------------------
   /// > 0: the phase hook also gets a snapshot this often inside the phases [s]; 0: off.
@@ -261,7 +264,8 @@ struct SimParams {
                  CORDGRASP_NVP(no_contact_exit_time_s), CORDGRASP_NVP(held_translation_m),
                  CORDGRASP_NVP(held_rotation_rad), CORDGRASP_NVP(contact_distance_m),
                  CORDGRASP_NVP(unstable_speed_mps), CORDGRASP_NVP(drop_distance_m),
-                 CORDGRASP_NVP(settle_shift_tolerance_m), CORDGRASP_NVP(trace_interval_s));
+                 CORDGRASP_NVP(settle_shift_tolerance_m), CORDGRASP_NVP(squeeze_shift_limit_m),
+                 CORDGRASP_NVP(trace_interval_s));
   }
 };
 

@@ -17,7 +17,10 @@
 //             contacts: [{link, point_m, normal}] (object frame, normal out of the object),
 //             force_closure, epsilon, alpha_rad, chi_m2 (null: generic), region_rank (null),
 //             region (null: generic; layout of region_json.h: cords, P1, P_l, P_r, ...),
-//             timings_s: {exploration, finger, quality}}]
+//             timings_s: {exploration, finger, quality},
+//             validation (validated plans only): every GraspValidation field}]
+//   validation (validated plans only): {parameters: every ValidationParams field,
+//                                        stats: every ValidationStats field}
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -28,6 +31,7 @@
 #include "cordgrasp/core/grasp.h"
 #include "cordgrasp/core/grasp_plan.h"
 #include "cordgrasp/core/hand_model.h"
+#include "cordgrasp/jobs/grasp_validation.h"
 
 namespace cordgrasp {
 
@@ -47,6 +51,9 @@ struct PlanDocument {
   std::optional<CordParams> cord;  ///< cord planner: exploration as run (seed, time limit)
   PlanStats stats;
   std::vector<Grasp> grasps;
+  /// Validated planning (plan_validated_grasps): its settings, counts and one verdict per grasp;
+  /// unset for a plan of force-closure grasps only.
+  std::optional<PlanValidation> validation;
 };
 
 /// JSON of a plan (layout above); joint and link names come from `hand`.
