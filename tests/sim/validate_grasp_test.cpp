@@ -407,6 +407,38 @@ TEST(ValidateGrasp, BoxInertiaIsTheSolidBoxs) {
   EXPECT_TRUE(r.object.closed);
 }
 
+/// A box of side `side_m` without its top face (an open, non-watertight mesh).
+Mesh open_box(double side_m) {
+  Mesh mesh = make_box_mesh(Eigen::Vector3d::Constant(side_m));
+  std::vector<Eigen::Vector3i> kept;
+  for (const Eigen::Vector3i& t : mesh.triangles) {
+    bool top = true;
+    for (int i = 0; i < 3; ++i) top = top && mesh.vertices[t[i]].z() > 0.49 * side_m;
+    if (!top) kept.push_back(t);
+  }
+  mesh.triangles = kept;
+  return mesh;
+}
+
+TEST(ValidateGrasp, OpenMeshMassIsAShellOfItsSurfaceAtMostItsHull) {
+  constexpr double kMassRelTol = 1e-9;
+  const SimParams params;
+  // 20 cm open box: five faces × 1 cm shell = 2 l, less than the hull's 8 l.
+  const double big_m = 0.2;
+  const SimResult big = validate_grasp(open_box(big_m), gripper(), centre_pinch(kShortOfFaces_m),
+                                       params, SimTests{false, false, false});
+  EXPECT_FALSE(big.object.closed);
+  const double shell_kg = params.density_kgm3 * 5 * big_m * big_m * params.open_mesh_shell_m;
+  EXPECT_NEAR(big.object.mass_kg, shell_kg, kMassRelTol * shell_kg);
+  // 2 cm open box: the shell (20 cm³) would exceed the hull (8 cm³): the hull's volume.
+  const double small_m = 0.02;
+  const SimResult small = validate_grasp(open_box(small_m), gripper(),
+                                         centre_pinch(kShortOfFaces_m), params,
+                                         SimTests{false, false, false});
+  const double hull_kg = params.density_kgm3 * std::pow(small_m, 3);
+  EXPECT_NEAR(small.object.mass_kg, hull_kg, 1e-6 * hull_kg);
+}
+
 TEST(ValidateGrasp, ThrowsWhenTheJointVectorsDoNotFitTheHand) {
   Grasp g = centre_pinch();
   g.q.resize(1);

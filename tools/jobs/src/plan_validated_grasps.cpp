@@ -195,6 +195,7 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
     }
     // Nudged trials, `jobs` at a time, until the verdict is decided; the record keeps the
     // trials a one-at-a-time run would have made, so it does not depend on `jobs`.
+    vs.held_as_planned += first.held() ? 1 : 0;
     std::vector<Outcome> outcomes{first.outcome};
     const auto decided = [&](const std::vector<Outcome>& o) {
       const int held = count_held(o);

@@ -118,6 +118,9 @@ struct SimParams {
   // --- Object ------------------------------------------------------------------------------
   /// Object density [kg/m³] (mass = density × closed volume); half water: hollow objects.
   double density_kgm3 = 500.0;
+  /// Open (non-watertight) meshes: the mass is density × surface area × this shell thickness,
+  /// at most density × convex-hull volume; 0: the hull's volume (docs/physics.md §2) [m].
+  double open_mesh_shell_m = 0.01;
   /// Object mass [kg] overriding density × volume (CLI --mass); the inertia scales with it.
   std::optional<double> mass_kg;
   /// Collision shape of the object; kAuto: HACD parts hold the most grasps on handles.
@@ -238,6 +241,7 @@ struct SimParams {
                  CORDGRASP_NVP(cfm), CORDGRASP_NVP(linear_slop_m), CORDGRASP_NVP(gear_erp),
                  CORDGRASP_NVP(solver_residual_threshold), CORDGRASP_NVP(cone_friction),
                  CORDGRASP_NVP(articulated_warmstarting), CORDGRASP_NVP(density_kgm3),
+                 CORDGRASP_NVP(open_mesh_shell_m),
                  CORDGRASP_NVP(mass_kg), CORDGRASP_NVP(object_shape),
                  CORDGRASP_NVP(convex_volume_ratio), CORDGRASP_NVP(decomposition),
                  CORDGRASP_NVP(decomposition_cache_dir), CORDGRASP_NVP(close_speed),

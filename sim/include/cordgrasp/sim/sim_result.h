@@ -51,7 +51,7 @@ struct SimObjectInfo {
   int parts = 1;                  ///< convex parts (1 for a hull; triangles for GImpact)
   double mass_kg = 0.0;
   double volume_m3 = 0.0;         ///< volume the mass came from [m³]
-  bool closed = false;            ///< closed mesh: closed volume; open: convex-hull volume
+  bool closed = false;            ///< closed mesh: closed volume; open: shell or hull volume
   Eigen::Vector3d com_O = Eigen::Vector3d::Zero();  ///< centre of mass in the object frame [m]
   Eigen::Vector3d principal_inertia_kgm2 = Eigen::Vector3d::Zero();  ///< about the COM
   double decomposition_s = 0.0;   ///< HACD time (0 when cached or unused) [s]

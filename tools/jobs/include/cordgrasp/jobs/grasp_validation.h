@@ -76,6 +76,7 @@ struct ValidationStats {
   int similar = 0;           ///< candidates skipped as near copies of an accepted grasp
   int simulated = 0;         ///< candidates given to physics
   int rejected_early = 0;    ///< of those, dropped by the squeeze shift before lift
+  int held_as_planned = 0;   ///< of those, held in the first trial (the grasp as planned)
   int trials_run = 0;        ///< physics trials run in all
   int accepted = 0;          ///< candidates held in ≥ min_held trials
   std::optional<double> first_accepted_s;  ///< time to the first accepted grasp
@@ -89,7 +90,8 @@ struct ValidationStats {
   void Serialize(Archive* a) {
     visit_fields(a, CORDGRASP_NVP(attempts), CORDGRASP_NVP(force_closure),
                  CORDGRASP_NVP(similar), CORDGRASP_NVP(simulated),
-                 CORDGRASP_NVP(rejected_early), CORDGRASP_NVP(trials_run),
+                 CORDGRASP_NVP(rejected_early), CORDGRASP_NVP(held_as_planned),
+                 CORDGRASP_NVP(trials_run),
                  CORDGRASP_NVP(accepted), CORDGRASP_NVP(first_accepted_s),
                  CORDGRASP_NVP(planning_s), CORDGRASP_NVP(physics_s), CORDGRASP_NVP(total_s),
                  CORDGRASP_NVP(budget_spent));
