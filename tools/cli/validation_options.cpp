@@ -15,7 +15,7 @@ void add_validation_options(CLI::App* cmd, ValidationParams& v) {
       ->check(whole_number_in(1, 1000))
       ->capture_default_str();
   cmd->add_option("--budget", v.budget_s,
-                  "Wall-clock budget of planning and physics together [s] (replaces "
+                  "CPU budget of planning and physics together, all threads [s] (replaces "
                   "--time-limit)")
       ->check(number_in(1e-3, 1e6))
       ->capture_default_str();

@@ -22,8 +22,8 @@ struct ValidationParams {
   Protocol protocol = Protocol::kQuick;  ///< physics protocol preset of every trial
   int trials = 3;                        ///< trials per candidate: as planned, then nudged
   int min_held = 2;                      ///< accepted when held in at least this many trials
-  /// Wall-clock cap of planning and physics together [s]; the planner's own time limit
-  /// (PlanParams::time_limit_s) is ignored.
+  /// Cap on the CPU time of planning and physics together (all threads of the process) [s];
+  /// the planner's own time limit (PlanParams::time_limit_s) is ignored.
   double budget_s = 30.0;
   /// Early rejection (SimParams::squeeze_shift_limit_m): a candidate whose object moves
   /// farther than this while closing is dropped before lift and shake [m]; 0: off.
@@ -69,7 +69,7 @@ struct GraspValidation {
   }
 };
 
-/// Counts of one validated plan; times are wall-clock from the plan's start [s].
+/// Counts of one validated plan; times from the plan's start, wall clock unless named CPU [s].
 struct ValidationStats {
   int attempts = 0;          ///< finger-stage runs of the planner
   int force_closure = 0;     ///< force-closure candidates the planner gave
@@ -83,6 +83,8 @@ struct ValidationStats {
   double planning_s = 0.0;   ///< exploration and finger stage
   double physics_s = 0.0;    ///< physics trials
   double total_s = 0.0;      ///< the whole plan
+  std::optional<double> first_accepted_cpu_s;  ///< CPU time to the first accepted grasp
+  double cpu_s = 0.0;        ///< CPU time of the whole plan (all threads)
   bool budget_spent = false;  ///< stopped by budget_s before enough grasps were accepted
 
   /// Visits every field in declaration order (core/serialize.h).
@@ -94,6 +96,7 @@ struct ValidationStats {
                  CORDGRASP_NVP(trials_run),
                  CORDGRASP_NVP(accepted), CORDGRASP_NVP(first_accepted_s),
                  CORDGRASP_NVP(planning_s), CORDGRASP_NVP(physics_s), CORDGRASP_NVP(total_s),
+                 CORDGRASP_NVP(first_accepted_cpu_s), CORDGRASP_NVP(cpu_s),
                  CORDGRASP_NVP(budget_spent));
   }
 };
