@@ -16,6 +16,7 @@
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
+#include "cordgrasp/jobs/plan_validated_grasps.h"
 #include "cordgrasp/jobs/sim_json.h"
 #include "cordgrasp/jobs/text_format.h"
 #include "parallel_for.h"
@@ -31,6 +32,7 @@ std::string number(double v) { return format_number(v, "%.9g"); }
 std::string seconds(double v) { return format_number(v, "%.6f"); }
 std::string optional_number(const std::optional<double>& v) { return v ? number(*v) : ""; }
 std::string optional_seconds(const std::optional<double>& v) { return v ? seconds(*v) : ""; }
+std::string optional_count(const std::optional<int>& v) { return v ? std::to_string(*v) : ""; }
 
 std::string csv_quote(const std::string& cell) {
   if (cell.find_first_of(",\"\n\r") == std::string::npos) return cell;
@@ -274,13 +276,16 @@ const std::vector<std::string>& bench_csv_columns() {
       "exploration_s", "finger_s",       "quality_s",     "total_s",       "regions",
       "regions_processed", "finger_attempts", "grasps",   "timed_out",     "epsilon",
       "alpha_rad",    "chi_m2",          "region_rank",   "sim_lift",      "sim_shake",
-      "sim_gravity6", "sim_outcome",     "sim_wall_s"};
+      "sim_gravity6", "sim_outcome",     "sim_wall_s",    "validated_accepted",
+      "validated_candidates", "validated_simulated", "validated_rejected_early",
+      "validated_held_as_planned", "validated_first_accepted_cpu_s", "validated_cpu_s"};
   return kColumns;
 }
 
 const std::vector<std::string>& bench_timing_columns() {
-  static const std::vector<std::string> kTiming = {"first_fc_s", "exploration_s", "finger_s",
-                                                   "quality_s",  "total_s",       "sim_wall_s"};
+  static const std::vector<std::string> kTiming = {
+      "first_fc_s", "exploration_s", "finger_s", "quality_s", "total_s", "sim_wall_s",
+      "validated_first_accepted_cpu_s", "validated_cpu_s"};
   return kTiming;
 }
 
@@ -312,7 +317,14 @@ std::vector<std::string> bench_row_cells(const BenchRow& r) {
           r.sim_shake,
           r.sim_gravity6,
           r.sim_outcome,
-          optional_seconds(r.sim_wall_s)};
+          optional_seconds(r.sim_wall_s),
+          optional_count(r.validated_accepted),
+          optional_count(r.validated_candidates),
+          optional_count(r.validated_simulated),
+          optional_count(r.validated_rejected_early),
+          optional_count(r.validated_held_as_planned),
+          optional_seconds(r.validated_first_accepted_cpu_s),
+          optional_seconds(r.validated_cpu_s)};
 }
 
 std::string bench_csv(const std::vector<BenchRow>& rows) {
@@ -328,10 +340,19 @@ std::string bench_csv(const std::vector<BenchRow>& rows) {
 
 std::vector<BenchRow> parse_bench_csv(const std::string& text, const std::string& what) {
   const auto records = parse_csv_records(text, what);
-  if (records.empty() || records[0] != bench_csv_columns())
+  // Files written before the validated_* columns (the first 28 columns) are read too.
+  constexpr size_t kColumnsBeforeValidation = 28;
+  const std::vector<std::string>& all = bench_csv_columns();
+  const std::vector<std::string> older(all.begin(), all.begin() + kColumnsBeforeValidation);
+  if (records.empty() || (records[0] != all && records[0] != older))
     throw InputError(what + ": not a cordgrasp bench results.csv (header differs)");
   std::vector<BenchRow> rows;
-  const size_t columns = bench_csv_columns().size();
+  const size_t columns = records[0].size();
+  const auto optional_int = [](const std::string& cell,
+                               const std::string& where) -> std::optional<int> {
+    if (cell.empty()) return std::nullopt;
+    return static_cast<int>(parse_integer(cell, where));
+  };
   for (size_t i = 1; i < records.size(); ++i) {
     const auto& c = records[i];
     const std::string where = what + ": row " + std::to_string(i);
@@ -369,6 +390,15 @@ std::vector<BenchRow> parse_bench_csv(const std::string& text, const std::string
     r.sim_gravity6 = c[25];
     r.sim_outcome = c[26];
     r.sim_wall_s = parse_optional_double(c[27], where);
+    if (columns > kColumnsBeforeValidation) {
+      r.validated_accepted = optional_int(c[28], where);
+      r.validated_candidates = optional_int(c[29], where);
+      r.validated_simulated = optional_int(c[30], where);
+      r.validated_rejected_early = optional_int(c[31], where);
+      r.validated_held_as_planned = optional_int(c[32], where);
+      r.validated_first_accepted_cpu_s = parse_optional_double(c[33], where);
+      r.validated_cpu_s = parse_optional_double(c[34], where);
+    }
     rows.push_back(std::move(r));
   }
   return rows;
@@ -439,7 +469,25 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
     PlanJobParams job = params.job;
     job.planner = attempt.planner;
     job.plan.seed = attempt.seed;
-    const PlanDocument plan = plan_job(job, *mesh, attempt.object_path, *hand);
+    SimParams sim = sim_params_for(params.protocol);
+    sim.decomposition_cache_dir = params.sim_cache_dir;
+    PlanDocument plan;
+    if (params.validation) {
+      ValidationParams v = *params.validation;
+      v.tests = params.tests == "none" ? std::string("lift,shake") : params.tests;
+      v.protocol = params.protocol;
+      plan = plan_validated_grasps(job, v, sim, *mesh, attempt.object_path, *hand);
+      const ValidationStats& vs = plan.validation->stats;
+      row.validated_accepted = vs.accepted;
+      row.validated_candidates = vs.force_closure;
+      row.validated_simulated = vs.simulated;
+      row.validated_rejected_early = vs.rejected_early;
+      row.validated_held_as_planned = vs.held_as_planned;
+      row.validated_first_accepted_cpu_s = vs.first_accepted_cpu_s;
+      row.validated_cpu_s = vs.cpu_s;
+    } else {
+      plan = plan_job(job, *mesh, attempt.object_path, *hand);
+    }
     const PlanStats& s = plan.stats;
     row.first_fc_s = s.first_force_closure_s;
     row.exploration_s = s.exploration_s;
@@ -460,9 +508,8 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
     row.region_rank = g.region_rank;
     result.first_grasp = g;
     if (params.tests == "none") return result;
-    SimParams sim = sim_params_for(params.protocol);
     sim.contact = plan_contact_model(plan);  // one friction model for planner and physics
-    sim.decomposition_cache_dir = params.sim_cache_dir;
+    if (params.validation) sim.squeeze_shift_limit_m = params.validation->squeeze_shift_limit_m;
     const SimDocument doc =
         validate_plan(plan, *hand, *mesh, sim, sim_tests_from_string(params.tests), 1);
     if (!doc.results.empty()) {
