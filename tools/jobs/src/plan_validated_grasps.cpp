@@ -38,7 +38,6 @@ double process_cpu_s() {
 
 /// Adds the counts of one planner call to the running total (times add up too).
 void add_stats(PlanStats& total, const PlanStats& s) {
-  total.regions = std::max(total.regions, s.regions);
   total.regions_processed += s.regions_processed;
   total.attempts += s.attempts;
   total.force_closure += s.force_closure;
@@ -52,8 +51,9 @@ void add_stats(PlanStats& total, const PlanStats& s) {
 }
 
 /// Hands out the planner's force-closure candidates one at a time, best first: the cord planner
-/// continues in its region order after the last candidate's region; the generic planner is
-/// called again with the next seed.
+/// continues in its region order after the last candidate's region and, once every region is
+/// processed, explores again with the next seed (region_rank is then the rank in that
+/// exploration); the generic planner is called again with the next seed.
 class CandidateSource {
  public:
   CandidateSource(const PlanDocument& doc, const Mesh& mesh, const HandModel& hand)
@@ -66,14 +66,15 @@ class CandidateSource {
     params.grasps = 1;
     params.time_limit_s = time_left_s;
     if (doc_.planner == "cord") {
-      if (!explored_) explore(time_left_s, stats);
+      // Every region processed: explore again with the next seed (new regions), a few times.
+      while (order_.empty() && explorations_ < kMaxExplorations) explore(time_left_s, stats);
       if (order_.empty()) return std::nullopt;
       const PlanResult r = plan_cord_grasps_from_regions(mesh_, hand_, *collider_, regions_,
                                                          params, 0.0, &order_);
       add_stats(stats, r.stats);
       if (r.grasps.empty()) {
         order_.clear();
-        return std::nullopt;
+        return next(time_left_s - r.stats.total_s, stats);
       }
       Grasp g = r.grasps.front();
       const int rank = *g.region_rank;  // position in order_
@@ -95,22 +96,25 @@ class CandidateSource {
   void explore(double time_left_s, PlanStats& stats) {
     const auto start = Clock::now();
     CordParams explore = *doc_.cord;
+    explore.seed += static_cast<std::uint64_t>(explorations_);
     if (explore.time_limit_s <= 0.0 || explore.time_limit_s > time_left_s)
       explore.time_limit_s = time_left_s;
     const double w_palm = palm_width(hand_);
     regions_ = explore_cords(mesh_, w_palm, explore);
     order_ = cord_region_order(regions_, w_palm, explore);
     exploration_s_ = seconds_since(start);
-    stats.regions = static_cast<int>(regions_.size());
-    stats.exploration_s = exploration_s_;
-    explored_ = true;
+    offset_ = 0;
+    stats.regions += static_cast<int>(regions_.size());
+    stats.exploration_s += exploration_s_;
+    ++explorations_;
   }
 
   const PlanDocument& doc_;
   const Mesh& mesh_;
   const HandModel& hand_;
   std::unique_ptr<HandObjectCollider> collider_;
-  bool explored_ = false;
+  static constexpr int kMaxExplorations = 4;  ///< the first and three with later seeds
+  int explorations_ = 0;
   std::vector<GraspRegion> regions_;
   std::vector<int> order_;  ///< regions not yet processed, in processing order
   int offset_ = 0;          ///< regions processed before order_.front()

@@ -17,7 +17,8 @@ namespace cordgrasp {
 using ValidatedPlanProgress = std::function<void(const std::string&)>;
 
 /// Plans `job.plan.grasps` grasps that hold: asks the planner for one force-closure candidate at
-/// a time (the cord planner continues in its region order, the generic one with the next seed),
+/// a time (the cord planner continues in its region order, exploring again with seed + 1, + 2,
+/// + 3 once every region is processed; the generic one is called with the next seed),
 /// skips candidates that do not differ from an accepted one (grasps_differ), simulates the
 /// rest as planned (early rejection by the squeeze shift), then up to `trials` − 1 more times
 /// nudged (perturbed_grasp, seed trial_seed + 1000·c + t for candidate c, trial t), `jobs`
