@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs missing Debian packages, builds (Release, -j2) and runs the main job on the shipped
-# default hand (cordgrasp_sah) and object (mug): plan with the cord planner, check the grasps in
-# Bullet (lift, shake), render them. Usage: tools/demo.sh [output dir, default ./demo-out]
+# default hand (cordgrasp_sah) and object (mug): plan three grasps with the cord planner that
+# hold in Bullet (validated planning: held through lift and shake in >= 2 of 3 trials, pairwise
+# different), render them with their physics frames. Usage: tools/demo.sh [output dir, default ./demo-out]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${CORDGRASP_BUILD_DIR:-$root/build}"

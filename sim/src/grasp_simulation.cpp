@@ -80,6 +80,14 @@ const char* to_string(Outcome outcome) {
   return "?";
 }
 
+Outcome parse_outcome(const std::string& text) {
+  for (Outcome o : {Outcome::kHeld, Outcome::kSlipped, Outcome::kDropped, Outcome::kUnstable,
+                    Outcome::kNotRun})
+    if (text == to_string(o)) return o;
+  throw std::invalid_argument("unknown outcome '" + text +
+                              "' (allowed: held, slipped, dropped, unstable, not_run)");
+}
+
 const PhaseResult* SimResult::phase(const std::string& name) const {
   for (const PhaseResult& p : phases)
     if (p.name == name) return &p;

@@ -104,11 +104,20 @@ std::unique_ptr<ObjectBody> make_object_body(const Mesh& mesh, const SimParams& 
   auto out = std::make_unique<ObjectBody>();
   SimObjectInfo& info = out->info;
 
-  // Mass basis: the closed volume, or the convex hull's for open meshes.
+  // Mass basis (docs/physics.md §2): the closed volume; for an open mesh a shell of
+  // open_mesh_shell_m over its surface, at most the convex hull's volume.
   const SolidVolume hull_volume = convex_hull_volume(mesh);
   const std::optional<SolidVolume> closed = closed_mesh_volume(mesh);
   info.closed = closed.has_value();
-  const SolidVolume basis = closed ? *closed : hull_volume;
+  SolidVolume basis = closed ? *closed : hull_volume;
+  if (!closed && params.open_mesh_shell_m > 0.0) {
+    const PrincipalAxes surface = principal_axes(mesh);
+    const double shell_m3 = surface.area_m2 * params.open_mesh_shell_m;
+    if (shell_m3 < hull_volume.volume_m3) {
+      basis.volume_m3 = shell_m3;
+      basis.center_of_mass_m = surface.centroid;
+    }
+  }
   if (!(basis.volume_m3 > 0.0))
     throw std::invalid_argument("make_object_body: mesh '" + mesh.name + "' bounds no volume");
   info.volume_m3 = basis.volume_m3;

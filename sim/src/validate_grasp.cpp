@@ -41,9 +41,10 @@ std::string to_string(const SimTests& tests) {
 
 namespace {
 
-/// Runs settle and close; false when the grasp cannot continue (blown up, nothing touched).
+/// Runs settle and close; false when the grasp cannot continue (blown up, nothing touched,
+/// or pushed past SimParams::squeeze_shift_limit_m).
 bool settle_and_close(GraspSimulation& sim, SimResult& result, const PhaseHook& hook,
-                      bool record) {
+                      bool record, double squeeze_shift_limit_m) {
   PhaseResult settle = sim.settle();
   if (hook) hook(sim.snapshot("settle"));
   const bool settled = settle.outcome != Outcome::kUnstable;
@@ -54,6 +55,12 @@ bool settle_and_close(GraspSimulation& sim, SimResult& result, const PhaseHook& 
   }
   PhaseResult close = sim.close();
   if (hook) hook(sim.snapshot("close"));
+  if (close.outcome == Outcome::kHeld && squeeze_shift_limit_m > 0.0 &&
+      close.translation_m > squeeze_shift_limit_m) {
+    close.outcome = Outcome::kSlipped;
+    close.detail = "squeeze shift limit";
+    result.rejected_in_close = true;
+  }
   const bool closed = close.outcome == Outcome::kHeld;
   if (record) result.phases.push_back(close);
   if (!closed) {
@@ -79,7 +86,7 @@ SimResult validate_grasp(const Mesh& mesh, const HandModel& hand, const Grasp& g
     result.object = sim.object_info();
     result.X_WO = sim.X_WO_start();
     sim.set_segment_hook(hook);
-    const bool ready = settle_and_close(sim, result, hook, true);
+    const bool ready = settle_and_close(sim, result, hook, true, params.squeeze_shift_limit_m);
     const PhaseResult* settle = result.phase("settle");
     result.preshape_overlap =
         settle != nullptr && settle->translation_m > params.settle_shift_tolerance_m;
@@ -128,7 +135,8 @@ SimResult validate_grasp(const Mesh& mesh, const HandModel& hand, const Grasp& g
   // gravity6 starts from the closed grasp again: a fresh, identical world (deterministic).
   GraspSimulation sim(mesh, hand, grasp, params);
   SimResult scratch;
-  const bool closed_again = settle_and_close(sim, scratch, PhaseHook{}, false);
+  const bool closed_again = settle_and_close(sim, scratch, PhaseHook{}, false,
+                                             params.squeeze_shift_limit_m);
   sim.set_segment_hook(hook);  // after the repeated close, which the hook has already seen
   if (closed_again) {
     result.phases.push_back(sim.gravity6());

@@ -34,8 +34,10 @@ std::string read_text(const std::string& path) {
 
 TEST(CliRun, DefaultsWritePlanSimReportAndPictures) {
   TempDir dir;
+  // --no-validate keeps the CPU small; CliRun.ValidatesByDefault covers validated planning.
   const auto r = run_cordgrasp("run --grasps " + std::to_string(kGrasps) +
-                               " --size 160x120 --quiet --out-dir " + quoted(dir.path.string()));
+                               " --no-validate --size 160x120 --quiet --out-dir " +
+                               quoted(dir.path.string()));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json plan = read_json(dir.file("plan.json"));
   const nlohmann::json sim = read_json(dir.file("sim.json"));
@@ -75,6 +77,20 @@ TEST(CliRun, DefaultsWritePlanSimReportAndPictures) {
               sim["grasps"][k]["phases"].back()["translation_m"])
         << k;
   }
+}
+
+TEST(CliRun, ValidatesByDefault) {
+  TempDir dir;
+  const auto r = run_cordgrasp("run --hand parallel_gripper --object box --grasps 2 --no-render "
+                               "--quiet --out-dir " + quoted(dir.path.string()));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("accepted 2 / 2"), std::string::npos) << r.output;
+  const nlohmann::json plan = read_json(dir.file("plan.json"));
+  ASSERT_EQ(plan.at("grasps").size(), 2u);
+  EXPECT_EQ(plan.at("validation").at("stats").at("accepted"), 2);
+  for (const auto& g : plan.at("grasps"))
+    EXPECT_GE(g.at("validation").at("held_trials").get<int>(), 2) << g.dump();
+  EXPECT_NE(read_text(dir.file("report.md")).find("held trials"), std::string::npos);
 }
 
 TEST(CliRun, ProgressGoesToStderrUnlessQuiet) {

@@ -140,6 +140,9 @@ TEST(BenchCsv, RowsRoundTripIncludingQuotedErrors) {
   ok.sim_gravity6 = "not_run";
   ok.sim_outcome = "slipped";
   ok.sim_wall_s = 1.5;
+  ok.validated_accepted = 3;
+  ok.validated_candidates = 9;
+  ok.validated_first_accepted_cpu_s = 2.5;
   BenchRow bad;
   bad.attempt = 4;
   bad.object = "bad";
@@ -150,7 +153,10 @@ TEST(BenchCsv, RowsRoundTripIncludingQuotedErrors) {
             "attempt,object,object_path,hand,planner,repeat,seed,status,error,first_fc_s,"
             "exploration_s,finger_s,quality_s,total_s,regions,regions_processed,"
             "finger_attempts,grasps,timed_out,epsilon,alpha_rad,alpha_approach_rad,chi_m2,"
-            "region_rank,sim_lift,sim_shake,sim_gravity6,sim_outcome,sim_wall_s,object_scale");
+            "region_rank,sim_lift,sim_shake,sim_gravity6,sim_outcome,sim_wall_s,object_scale,"
+            "validated_accepted,validated_candidates,validated_simulated,"
+            "validated_rejected_early,validated_held_as_planned,validated_first_accepted_cpu_s,"
+            "validated_cpu_s");
   const auto rows = parse_bench_csv(text, "test");
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(bench_row_cells(rows[0]), bench_row_cells(ok));

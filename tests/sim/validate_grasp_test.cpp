@@ -75,6 +75,27 @@ TEST(ValidateGrasp, ParallelGripperPinchingABoxAtItsCentreHoldsThroughEveryTest)
   EXPECT_NEAR(r.object.mass_kg, SimParams{}.density_kgm3 * std::pow(kBoxSide_m, 3), 1e-12);
 }
 
+TEST(ValidateGrasp, SqueezeShiftLimitRejectsTheGraspInCloseBeforeTheTests) {
+  // The centre pinch hardly moves the box while closing: a limit below its shift rejects it,
+  // one above it (and the default, off) lets it through.
+  const SimResult free = validate_grasp(box(), gripper(), centre_pinch(), gripper_params());
+  const double shift_m = free.phase("close")->translation_m;
+  EXPECT_FALSE(free.rejected_in_close);
+  SimParams params = gripper_params();
+  params.squeeze_shift_limit_m = 0.5 * shift_m + 1e-12;
+  const SimResult r = validate_grasp(box(), gripper(), centre_pinch(), params);
+  EXPECT_TRUE(r.rejected_in_close);
+  EXPECT_EQ(r.outcome, Outcome::kSlipped);
+  EXPECT_EQ(r.phase("close")->outcome, Outcome::kSlipped);
+  EXPECT_EQ(r.phase("lift")->outcome, Outcome::kNotRun);
+  EXPECT_EQ(r.phase("lift")->steps, 0);
+  params.squeeze_shift_limit_m = 2.0 * shift_m + 1e-6;
+  const SimResult ok = validate_grasp(box(), gripper(), centre_pinch(), params,
+                                      sim_tests_from_string("lift"));
+  EXPECT_FALSE(ok.rejected_in_close);
+  EXPECT_EQ(ok.outcome, Outcome::kHeld);
+}
+
 TEST(ValidateGrasp, ThoroughProtocolHoldsTheCentrePinchThroughItsFullPhases) {
   const SimParams params = gripper_params(Protocol::kThorough);
   const SimResult r = validate_grasp(box(), gripper(), centre_pinch(), params);
@@ -384,6 +405,38 @@ TEST(ValidateGrasp, BoxInertiaIsTheSolidBoxs) {
   for (int a = 0; a < 3; ++a) EXPECT_NEAR(got[a], expected[a], kInertiaRelTol * expected[a]);
   EXPECT_EQ(r.object.shape, ObjectShape::kConvexHull);
   EXPECT_TRUE(r.object.closed);
+}
+
+/// A box of side `side_m` without its top face (an open, non-watertight mesh).
+Mesh open_box(double side_m) {
+  Mesh mesh = make_box_mesh(Eigen::Vector3d::Constant(side_m));
+  std::vector<Eigen::Vector3i> kept;
+  for (const Eigen::Vector3i& t : mesh.triangles) {
+    bool top = true;
+    for (int i = 0; i < 3; ++i) top = top && mesh.vertices[t[i]].z() > 0.49 * side_m;
+    if (!top) kept.push_back(t);
+  }
+  mesh.triangles = kept;
+  return mesh;
+}
+
+TEST(ValidateGrasp, OpenMeshMassIsAShellOfItsSurfaceAtMostItsHull) {
+  constexpr double kMassRelTol = 1e-9;
+  const SimParams params;
+  // 20 cm open box: five faces × 1 cm shell = 2 l, less than the hull's 8 l.
+  const double big_m = 0.2;
+  const SimResult big = validate_grasp(open_box(big_m), gripper(), centre_pinch(kShortOfFaces_m),
+                                       params, SimTests{false, false, false});
+  EXPECT_FALSE(big.object.closed);
+  const double shell_kg = params.density_kgm3 * 5 * big_m * big_m * params.open_mesh_shell_m;
+  EXPECT_NEAR(big.object.mass_kg, shell_kg, kMassRelTol * shell_kg);
+  // 2 cm open box: the shell (20 cm³) would exceed the hull (8 cm³): the hull's volume.
+  const double small_m = 0.02;
+  const SimResult small = validate_grasp(open_box(small_m), gripper(),
+                                         centre_pinch(kShortOfFaces_m), params,
+                                         SimTests{false, false, false});
+  const double hull_kg = params.density_kgm3 * std::pow(small_m, 3);
+  EXPECT_NEAR(small.object.mass_kg, hull_kg, 1e-6 * hull_kg);
 }
 
 TEST(ValidateGrasp, ThrowsWhenTheJointVectorsDoNotFitTheHand) {

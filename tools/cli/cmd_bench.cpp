@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "cordgrasp/jobs/bench_run.h"
 #include "options.h"
+#include "validation_options.h"
 
 namespace cordgrasp::cli {
 namespace {
@@ -95,6 +96,9 @@ void add_bench_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--shard", opt->bench.shard,
                   "k/N: run only attempts whose index mod N = k-1 (join with cordgrasp merge)");
+  cmd->add_flag("--validate", opt->bench.validate,
+                "Validated planning per attempt (plan --validate); adds the validated_* columns");
+  add_validation_options(cmd, opt->bench.validation);
   cmd->add_flag("--no-sheets", opt->bench.no_sheets, "No contact sheet PNGs");
   cmd->add_option("--sheet-size", opt->bench.sheet_size, "Contact sheet tile size WxH [px]")
       ->capture_default_str();

@@ -12,6 +12,8 @@
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/plan_json.h"
+#include "cordgrasp/jobs/plan_validated_grasps.h"
+#include "validation_options.h"
 
 namespace cordgrasp::cli {
 namespace {
@@ -21,6 +23,10 @@ struct PlanOptions {
   std::string object;
   PlanJobParams job;
   std::string out;
+  bool validate = false;           ///< --validate: only grasps that hold in physics
+  ValidationParams validation;
+  std::optional<double> mass_kg, density_kgm3;
+  int jobs = 1;
 };
 
 std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
@@ -56,9 +62,17 @@ void print_summary(const PlanDocument& doc, const HandModel& hand, const std::st
                         g.alpha_rad * 180.0 / M_PI, g.contacts.size());
     if (g.region_rank && g.chi_m2)
       std::cout << format(", region %d (chi %.3g m^2)", *g.region_rank, *g.chi_m2);
+    if (doc.validation) {
+      const GraspValidation& v = doc.validation->grasps[i];
+      std::cout << format("; held in %d / %d trials, squeeze shift %.0f mm", v.held_trials,
+                          v.trials, 1e3 * v.squeeze_shift_m);
+    }
     std::cout << '\n';
   }
-  if (doc.grasps.empty()) std::cout << "  no force-closure grasp found\n";
+  if (doc.validation)
+    std::cout << "  " << validation_stats_line(doc.validation->stats, doc.params.grasps) << '\n';
+  else if (doc.grasps.empty())
+    std::cout << "  no force-closure grasp found\n";
   std::cout << "wrote " << out << '\n';
 }
 
@@ -66,7 +80,18 @@ void run_plan(const PlanOptions& opt) {
   const std::string object_path = resolve_object_path(opt.object);
   const Mesh mesh = load_job_mesh(opt.job, object_path);
   const HandModel hand = load_hand(opt.hand);
-  const PlanDocument doc = plan_job(opt.job, mesh, object_path, hand);
+  PlanDocument doc;
+  if (opt.validate) {
+    SimParams sim;
+    sim.mass_kg = opt.mass_kg;
+    if (opt.density_kgm3) sim.density_kgm3 = *opt.density_kgm3;
+    doc = plan_validated_grasps(opt.job, opt.validation, sim, mesh, object_path, hand, opt.jobs,
+                                [](const std::string& line) {
+                                  std::cerr << "plan: " << line << '\n';
+                                });
+  } else {
+    doc = plan_job(opt.job, mesh, object_path, hand);
+  }
   write_plan_file(opt.out, doc, hand);
   print_summary(doc, hand, opt.out);
 }
@@ -82,6 +107,20 @@ void add_plan_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--object,-o", opt->object, "Object mesh file or shipped object name")->required();
   add_plan_job_options(cmd, opt->job);
+  cmd->add_flag("--validate", opt->validate,
+                "Keep only grasps that hold in physics (force-closure candidates, best first, "
+                "until --grasps are accepted or --budget is spent)");
+  cmd->add_option("--tests", opt->validation.tests,
+                  "--validate: physics tests, any of lift,shake,gravity6")
+      ->capture_default_str();
+  add_enum_option(cmd, "--protocol", &opt->validation.protocol,
+                  "--validate: physics protocol, quick or thorough");
+  add_validation_options(cmd, opt->validation);
+  add_object_mass_options(cmd, opt->mass_kg, opt->density_kgm3);
+  cmd->add_option("--jobs,-j", opt->jobs,
+                  "--validate: trials simulated at once, one physics world per thread")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
   cmd->add_option("--out", opt->out, "Output plan.json")->required();
   cmd->callback([opt]() { run_plan(*opt); });
 }

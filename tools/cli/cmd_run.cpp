@@ -7,8 +7,10 @@
 #include "commands.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/object_meshes.h"
+#include "cordgrasp/jobs/plan_validated_grasps.h"
 #include "cordgrasp/jobs/run_job.h"
 #include "options.h"
+#include "validation_options.h"
 
 namespace cordgrasp::cli {
 
@@ -16,6 +18,7 @@ void add_run_command(CLI::App& app) {
   struct Options {
     RunParams run;
     bool no_render = false;
+    bool no_validate = false;
     bool quiet = false;
   };
   auto opt = std::make_shared<Options>();
@@ -40,6 +43,11 @@ void add_run_command(CLI::App& app) {
                   "Grasps simulated at once, one physics world per thread (same results)")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
+  cmd->add_flag("--no-validate", opt->no_validate,
+                "Plan force-closure grasps only and validate them afterwards (default: keep "
+                "only grasps held in --min-held of --trials physics trials)");
+  add_validation_options(cmd, opt->run.validation);
+  add_object_mass_options(cmd, opt->run.mass_kg, opt->run.density_kgm3);
   cmd->add_option("--size", opt->run.picture.size, "Picture size WxH [px]")
       ->capture_default_str();
   cmd->add_flag("--no-render", opt->no_render, "No pictures");
@@ -48,6 +56,7 @@ void add_run_command(CLI::App& app) {
       ->required();
   cmd->callback([opt]() {
     opt->run.render = !opt->no_render;
+    opt->run.validate = !opt->no_validate;
     const auto start = std::chrono::steady_clock::now();
     const RunOutcome out = run_job(opt->run, [&](const std::string& line) {
       if (opt->quiet) return;
@@ -59,6 +68,8 @@ void add_run_command(CLI::App& app) {
               << out.report.plan.object_name << " with " << out.report.plan.hand_name;
     if (!out.sim_path.empty())
       std::cout << ", " << out.held << " held through " << to_string(out.sim.tests);
+    if (const auto& v = out.report.plan.validation)
+      std::cout << "\n  " << validation_stats_line(v->stats, out.report.plan.params.grasps);
     std::cout << "\n  report " << out.report_path << "\n";
   });
 }

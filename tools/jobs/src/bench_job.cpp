@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -16,6 +17,7 @@
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
+#include "cordgrasp/jobs/plan_validated_grasps.h"
 #include "cordgrasp/jobs/sim_json.h"
 #include "cordgrasp/jobs/text_format.h"
 #include "parallel_for.h"
@@ -31,6 +33,7 @@ std::string number(double v) { return format_number(v, "%.9g"); }
 std::string seconds(double v) { return format_number(v, "%.6f"); }
 std::string optional_number(const std::optional<double>& v) { return v ? number(*v) : ""; }
 std::string optional_seconds(const std::optional<double>& v) { return v ? seconds(*v) : ""; }
+std::string optional_count(const std::optional<int>& v) { return v ? std::to_string(*v) : ""; }
 
 std::string csv_quote(const std::string& cell) {
   if (cell.find_first_of(",\"\n\r") == std::string::npos) return cell;
@@ -271,55 +274,139 @@ std::vector<BenchAttempt> shard_attempts(const std::vector<BenchAttempt>& attemp
   return out;
 }
 
-const std::vector<std::string>& bench_csv_columns() {
-  static const std::vector<std::string> kColumns = {
-      "attempt",      "object",          "object_path",   "hand",          "planner",
-      "repeat",       "seed",            "status",        "error",         "first_fc_s",
-      "exploration_s", "finger_s",       "quality_s",     "total_s",       "regions",
-      "regions_processed", "finger_attempts", "grasps",   "timed_out",     "epsilon",
-      "alpha_rad",    "alpha_approach_rad", "chi_m2",     "region_rank",   "sim_lift",
-      "sim_shake",
-      "sim_gravity6", "sim_outcome",     "sim_wall_s",    "object_scale"};
+namespace {
+
+/// One results.csv column: its name, how a row's field becomes a cell and back, and whether
+/// files written before the column existed may lack it (the field then keeps its default).
+struct BenchColumn {
+  const char* name;
+  std::function<std::string(const BenchRow&)> write;
+  std::function<void(const std::string& cell, const std::string& where, BenchRow*)> read;
+  bool may_be_absent = false;
+};
+
+template <typename T>
+BenchColumn text_column(const char* name, T BenchRow::*field) {
+  return {name, [field](const BenchRow& r) { return r.*field; },
+          [field](const std::string& cell, const std::string&, BenchRow* r) { r->*field = cell; }};
+}
+
+template <typename T>
+BenchColumn whole_column(const char* name, T BenchRow::*field) {
+  return {name, [field](const BenchRow& r) { return std::to_string(r.*field); },
+          [field](const std::string& cell, const std::string& where, BenchRow* r) {
+            r->*field = static_cast<T>(parse_integer(cell, where));
+          }};
+}
+
+BenchColumn optional_whole_column(const char* name, std::optional<int> BenchRow::*field,
+                                  bool may_be_absent = false) {
+  return {name, [field](const BenchRow& r) { return optional_count(r.*field); },
+          [field](const std::string& cell, const std::string& where, BenchRow* r) {
+            if (!cell.empty()) r->*field = static_cast<int>(parse_integer(cell, where));
+          },
+          may_be_absent};
+}
+
+BenchColumn seconds_column(const char* name, double BenchRow::*field) {
+  return {name, [field](const BenchRow& r) { return seconds(r.*field); },
+          [field](const std::string& cell, const std::string& where, BenchRow* r) {
+            r->*field = parse_double(cell, where);
+          }};
+}
+
+BenchColumn optional_column(const char* name, std::optional<double> BenchRow::*field,
+                            bool is_seconds, bool may_be_absent = false) {
+  return {name,
+          [field, is_seconds](const BenchRow& r) {
+            return is_seconds ? optional_seconds(r.*field) : optional_number(r.*field);
+          },
+          [field](const std::string& cell, const std::string& where, BenchRow* r) {
+            r->*field = parse_optional_double(cell, where);
+          },
+          may_be_absent};
+}
+
+/// Every column, in file order, listed once for writing and reading.
+const std::vector<BenchColumn>& bench_columns() {
+  static const std::vector<BenchColumn> kColumns = [] {
+    using R = BenchRow;
+    std::vector<BenchColumn> c = {
+        whole_column("attempt", &R::attempt),
+        text_column("object", &R::object),
+        text_column("object_path", &R::object_path),
+        text_column("hand", &R::hand),
+        text_column("planner", &R::planner),
+        whole_column("repeat", &R::repeat),
+        whole_column("seed", &R::seed),
+        {"status", [](const R& r) { return r.status; },
+         [](const std::string& cell, const std::string& where, R* r) {
+           if (cell != "ok" && cell != "no_grasp" && cell != "error")
+             throw InputError(where + ": unknown status '" + cell + "'");
+           r->status = cell;
+         }},
+        text_column("error", &R::error),
+        optional_column("first_fc_s", &R::first_fc_s, true),
+        seconds_column("exploration_s", &R::exploration_s),
+        seconds_column("finger_s", &R::finger_s),
+        seconds_column("quality_s", &R::quality_s),
+        seconds_column("total_s", &R::total_s),
+        whole_column("regions", &R::regions),
+        whole_column("regions_processed", &R::regions_processed),
+        whole_column("finger_attempts", &R::finger_attempts),
+        whole_column("grasps", &R::grasps),
+        {"timed_out", [](const R& r) { return std::string(r.timed_out ? "1" : "0"); },
+         [](const std::string& cell, const std::string&, R* r) { r->timed_out = cell == "1"; }},
+        optional_column("epsilon", &R::epsilon, false),
+        optional_column("alpha_rad", &R::alpha_rad, false),
+        optional_column("alpha_approach_rad", &R::alpha_approach_rad, false, true),
+        optional_column("chi_m2", &R::chi_m2, false),
+        optional_whole_column("region_rank", &R::region_rank),
+        text_column("sim_lift", &R::sim_lift),
+        text_column("sim_shake", &R::sim_shake),
+        text_column("sim_gravity6", &R::sim_gravity6),
+        text_column("sim_outcome", &R::sim_outcome),
+        optional_column("sim_wall_s", &R::sim_wall_s, true),
+        {"object_scale", [](const R& r) { return format_number(r.object_scale, "%.17g"); },
+         [](const std::string& cell, const std::string& where, R* r) {
+           r->object_scale = parse_double(cell, where);
+         },
+         true},
+        optional_whole_column("validated_accepted", &R::validated_accepted, true),
+        optional_whole_column("validated_candidates", &R::validated_candidates, true),
+        optional_whole_column("validated_simulated", &R::validated_simulated, true),
+        optional_whole_column("validated_rejected_early", &R::validated_rejected_early, true),
+        optional_whole_column("validated_held_as_planned", &R::validated_held_as_planned, true),
+        optional_column("validated_first_accepted_cpu_s", &R::validated_first_accepted_cpu_s,
+                        true, true),
+        optional_column("validated_cpu_s", &R::validated_cpu_s, true, true)};
+    return c;
+  }();
   return kColumns;
 }
 
+}  // namespace
+
+const std::vector<std::string>& bench_csv_columns() {
+  static const std::vector<std::string> kNames = [] {
+    std::vector<std::string> names;
+    for (const BenchColumn& c : bench_columns()) names.push_back(c.name);
+    return names;
+  }();
+  return kNames;
+}
+
 const std::vector<std::string>& bench_timing_columns() {
-  static const std::vector<std::string> kTiming = {"first_fc_s", "exploration_s", "finger_s",
-                                                   "quality_s",  "total_s",       "sim_wall_s"};
+  static const std::vector<std::string> kTiming = {
+      "first_fc_s", "exploration_s", "finger_s", "quality_s", "total_s", "sim_wall_s",
+      "validated_first_accepted_cpu_s", "validated_cpu_s"};
   return kTiming;
 }
 
 std::vector<std::string> bench_row_cells(const BenchRow& r) {
-  return {std::to_string(r.attempt),
-          r.object,
-          r.object_path,
-          r.hand,
-          r.planner,
-          std::to_string(r.repeat),
-          std::to_string(r.seed),
-          r.status,
-          r.error,
-          optional_seconds(r.first_fc_s),
-          seconds(r.exploration_s),
-          seconds(r.finger_s),
-          seconds(r.quality_s),
-          seconds(r.total_s),
-          std::to_string(r.regions),
-          std::to_string(r.regions_processed),
-          std::to_string(r.finger_attempts),
-          std::to_string(r.grasps),
-          r.timed_out ? "1" : "0",
-          optional_number(r.epsilon),
-          optional_number(r.alpha_rad),
-          optional_number(r.alpha_approach_rad),
-          optional_number(r.chi_m2),
-          r.region_rank ? std::to_string(*r.region_rank) : "",
-          r.sim_lift,
-          r.sim_shake,
-          r.sim_gravity6,
-          r.sim_outcome,
-          optional_seconds(r.sim_wall_s),
-          format_number(r.object_scale, "%.17g")};
+  std::vector<std::string> cells;
+  for (const BenchColumn& c : bench_columns()) cells.push_back(c.write(r));
+  return cells;
 }
 
 std::string bench_csv(const std::vector<BenchRow>& rows) {
@@ -335,49 +422,29 @@ std::string bench_csv(const std::vector<BenchRow>& rows) {
 
 std::vector<BenchRow> parse_bench_csv(const std::string& text, const std::string& what) {
   const auto records = parse_csv_records(text, what);
-  if (records.empty() || records[0] != bench_csv_columns())
-    throw InputError(what + ": not a cordgrasp bench results.csv (header differs)");
+  if (records.empty()) throw InputError(what + ": not a cordgrasp bench results.csv (empty)");
+  // Columns are found by name: files from before a newer column (may_be_absent) read too.
+  const std::vector<std::string>& header = records[0];
+  std::vector<std::pair<const BenchColumn*, size_t>> read_at;
+  for (const BenchColumn& c : bench_columns()) {
+    const auto it = std::find(header.begin(), header.end(), c.name);
+    if (it != header.end())
+      read_at.emplace_back(&c, static_cast<size_t>(it - header.begin()));
+    else if (!c.may_be_absent)
+      throw InputError(what + ": not a cordgrasp bench results.csv (no column '" +
+                       std::string(c.name) + "')");
+  }
+  if (read_at.size() != header.size())
+    throw InputError(what + ": not a cordgrasp bench results.csv (unknown or repeated columns)");
   std::vector<BenchRow> rows;
-  const size_t columns = bench_csv_columns().size();
   for (size_t i = 1; i < records.size(); ++i) {
-    const auto& c = records[i];
+    const auto& cells = records[i];
     const std::string where = what + ": row " + std::to_string(i);
-    if (c.size() != columns)
-      throw InputError(where + ": " + std::to_string(c.size()) + " cells, expected " +
-                       std::to_string(columns));
+    if (cells.size() != header.size())
+      throw InputError(where + ": " + std::to_string(cells.size()) + " cells, expected " +
+                       std::to_string(header.size()));
     BenchRow r;
-    r.attempt = static_cast<int>(parse_integer(c[0], where));
-    r.object = c[1];
-    r.object_path = c[2];
-    r.hand = c[3];
-    r.planner = c[4];
-    r.repeat = static_cast<int>(parse_integer(c[5], where));
-    r.seed = static_cast<std::uint64_t>(parse_integer(c[6], where));
-    r.status = c[7];
-    if (r.status != "ok" && r.status != "no_grasp" && r.status != "error")
-      throw InputError(where + ": unknown status '" + r.status + "'");
-    r.error = c[8];
-    r.first_fc_s = parse_optional_double(c[9], where);
-    r.exploration_s = parse_double(c[10], where);
-    r.finger_s = parse_double(c[11], where);
-    r.quality_s = parse_double(c[12], where);
-    r.total_s = parse_double(c[13], where);
-    r.regions = static_cast<int>(parse_integer(c[14], where));
-    r.regions_processed = static_cast<int>(parse_integer(c[15], where));
-    r.finger_attempts = static_cast<int>(parse_integer(c[16], where));
-    r.grasps = static_cast<int>(parse_integer(c[17], where));
-    r.timed_out = c[18] == "1";
-    r.epsilon = parse_optional_double(c[19], where);
-    r.alpha_rad = parse_optional_double(c[20], where);
-    r.alpha_approach_rad = parse_optional_double(c[21], where);
-    r.chi_m2 = parse_optional_double(c[22], where);
-    if (!c[23].empty()) r.region_rank = static_cast<int>(parse_integer(c[23], where));
-    r.sim_lift = c[24];
-    r.sim_shake = c[25];
-    r.sim_gravity6 = c[26];
-    r.sim_outcome = c[27];
-    r.sim_wall_s = parse_optional_double(c[28], where);
-    r.object_scale = parse_double(c[29], where);
+    for (const auto& [column, index] : read_at) column->read(cells[index], where, &r);
     rows.push_back(std::move(r));
   }
   return rows;
@@ -449,7 +516,25 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
     PlanJobParams job = params.job;
     job.planner = attempt.planner;
     job.plan.seed = attempt.seed;
-    const PlanDocument plan = plan_job(job, *mesh, attempt.object_path, *hand);
+    SimParams sim = sim_params_for(params.protocol);
+    sim.decomposition_cache_dir = params.sim_cache_dir;
+    PlanDocument plan;
+    if (params.validation) {
+      ValidationParams v = *params.validation;
+      v.tests = params.tests == "none" ? std::string("lift,shake") : params.tests;
+      v.protocol = params.protocol;
+      plan = plan_validated_grasps(job, v, sim, *mesh, attempt.object_path, *hand);
+      const ValidationStats& vs = plan.validation->stats;
+      row.validated_accepted = vs.accepted;
+      row.validated_candidates = vs.force_closure;
+      row.validated_simulated = vs.simulated;
+      row.validated_rejected_early = vs.rejected_early;
+      row.validated_held_as_planned = vs.held_as_planned;
+      row.validated_first_accepted_cpu_s = vs.first_accepted_cpu_s;
+      row.validated_cpu_s = vs.cpu_s;
+    } else {
+      plan = plan_job(job, *mesh, attempt.object_path, *hand);
+    }
     const PlanStats& s = plan.stats;
     row.first_fc_s = s.first_force_closure_s;
     row.exploration_s = s.exploration_s;
@@ -471,9 +556,8 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
     row.region_rank = g.region_rank;
     result.first_grasp = g;
     if (params.tests == "none") return result;
-    SimParams sim = sim_params_for(params.protocol);
     sim.contact = plan_contact_model(plan);  // one friction model for planner and physics
-    sim.decomposition_cache_dir = params.sim_cache_dir;
+    if (params.validation) sim.squeeze_shift_limit_m = params.validation->squeeze_shift_limit_m;
     const SimDocument doc =
         validate_plan(plan, *hand, *mesh, sim, sim_tests_from_string(params.tests), 1);
     if (!doc.results.empty()) {

@@ -35,13 +35,11 @@ Mesh load_job_mesh(const PlanJobParams& p, const std::string& object_path) {
 
 ContactModel plan_contact_model(const PlanDocument& plan) { return plan.params.quality.contact; }
 
-PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::string& object_path,
-                      const HandModel& hand) {
+PlanDocument plan_document_for(const PlanJobParams& p, const Mesh& mesh,
+                               const std::string& object_path, const HandModel& hand) {
   if (p.planner != "cord" && p.planner != "generic")
     throw std::invalid_argument("plan_job: unknown planner '" + p.planner +
                                 "' (allowed: cord, generic)");
-  auto collider = make_bullet_hand_collider(hand, mesh);
-
   PlanParams params = p.plan;
   params.quality.contact.soft_finger_radius_m =
       p.soft_finger_radius_m.value_or(hand.soft_finger_radius_m);
@@ -60,17 +58,24 @@ PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::strin
   doc.planner = p.planner;
   doc.params = params;
   doc.palm_width_m = palm_width(hand);
-
-  PlanResult result;
   if (p.planner == "cord") {
     CordParams cord = p.cord;
     cord.seed = params.seed;
     cord.time_limit_s = params.time_limit_s;
     doc.cord = cord;
-    result = plan_cord_grasps(mesh, hand, *collider, cord, params);
-  } else {
-    result = plan_generic_grasps(mesh, hand, *collider, params);
   }
+  return doc;
+}
+
+PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::string& object_path,
+                      const HandModel& hand) {
+  PlanDocument doc = plan_document_for(p, mesh, object_path, hand);
+  auto collider = make_bullet_hand_collider(hand, mesh);
+  PlanResult result;
+  if (p.planner == "cord")
+    result = plan_cord_grasps(mesh, hand, *collider, *doc.cord, doc.params);
+  else
+    result = plan_generic_grasps(mesh, hand, *collider, doc.params);
   doc.stats = result.stats;
   doc.grasps = std::move(result.grasps);
   return doc;

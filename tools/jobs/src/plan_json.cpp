@@ -178,6 +178,10 @@ struct PlanParameters {
 
 nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand) {
   nlohmann::json grasps = nlohmann::json::array();
+  if (plan.validation && plan.validation->grasps.size() != plan.grasps.size())
+    throw std::invalid_argument("plan_to_json: " + std::to_string(plan.grasps.size()) +
+                                " grasps but " +
+                                std::to_string(plan.validation->grasps.size()) + " verdicts");
   for (const Grasp& g : plan.grasps) {
     nlohmann::json contacts = nlohmann::json::array();
     for (const Contact& c : g.contacts) {
@@ -203,8 +207,10 @@ nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand) {
           {{"exploration", g.times.exploration_s},
            {"finger", g.times.finger_s},
            {"quality", g.times.quality_s}}}});
+    if (plan.validation)
+      grasps.back()["validation"] = params_to_json(plan.validation->grasps[grasps.size() - 1]);
   }
-  return {{"format", kFormat},
+  nlohmann::json out = {{"format", kFormat},
           {"format_version", kFormatVersion},
           {"cordgrasp_version", plan.cordgrasp_version},
           {"inputs",
@@ -224,6 +230,10 @@ nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand) {
            }()},
           {"stats", stats_json(plan.stats)},
           {"grasps", grasps}};
+  if (plan.validation)
+    out["validation"] = {{"parameters", params_to_json(plan.validation->params)},
+                         {"stats", params_to_json(plan.validation->stats)}};
+  return out;
 }
 
 void write_plan_file(const std::string& path, const PlanDocument& plan, const HandModel& hand) {
@@ -289,6 +299,19 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
     p.stats = stats_from_json(j.value("stats", nlohmann::json::object()));
     if (p.hand_name != hand.name)
       throw InputError(source + ": made for hand '" + p.hand_name + "', not '" + hand.name + "'");
+    if (j.contains("validation")) {
+      const auto& v = j.at("validation");
+      JsonReadArchive top(v, source, "validation");  // an object, or InputError
+      PlanValidation record;
+      params_from_json(v.contains("parameters") ? v.at("parameters") : nlohmann::json(),
+                       source, "validation.parameters", &record.params);
+      params_from_json(v.contains("stats") ? v.at("stats") : nlohmann::json(), source,
+                       "validation.stats", &record.stats);
+      for (const auto& item : v.items())
+        if (item.key() != "parameters" && item.key() != "stats")
+          throw InputError(source + ": validation: unknown key '" + item.key() + "'");
+      p.validation = record;
+    }
     for (const auto& g : j.at("grasps")) {
       Grasp grasp;
       const std::string where = source + ": grasps[" + std::to_string(p.grasps.size()) + "]";
@@ -326,6 +349,16 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
           throw InputError(source + ": grasp " + std::to_string(p.grasps.size()) + ": " +
                            e.what());
         }
+      }
+      if (p.validation) {
+        if (!g.contains("validation"))
+          throw InputError(where + ".validation: missing (the plan is a validated one)");
+        GraspValidation gv;
+        params_from_json(g.at("validation"), source,
+                         "grasps[" + std::to_string(p.grasps.size()) + "].validation", &gv);
+        p.validation->grasps.push_back(gv);
+      } else if (g.contains("validation")) {
+        throw InputError(where + ".validation: given, but the plan has no top-level validation");
       }
       const auto t = g.value("timings_s", nlohmann::json::object());
       grasp.times.exploration_s = t.value("exploration", 0.0);

@@ -13,6 +13,7 @@
 #include "cordgrasp/core/object_meshes.h"
 #include "cordgrasp/jobs/hand_scene.h"
 #include "cordgrasp/jobs/plan_json.h"
+#include "cordgrasp/jobs/plan_validated_grasps.h"
 #include "cordgrasp/jobs/text_format.h"
 #include "cordgrasp/jobs/validate_plan.h"
 #include "cordgrasp/render/contact_sheet.h"
@@ -53,14 +54,27 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   const auto mesh = std::make_shared<const Mesh>(load_job_mesh(opt.job, object_path));
   const HandModel hand = load_hand(opt.hand);
 
-  // 1. Plan.
+  // 1. Plan (validated: only grasps that hold in physics).
+  const bool validated = physics && opt.validate;
+  SimParams base = sim_params_for(opt.protocol);
+  base.mass_kg = opt.mass_kg;
+  if (opt.density_kgm3) base.density_kgm3 = *opt.density_kgm3;
+  ValidationParams validation = opt.validation;
+  validation.tests = opt.tests;
+  validation.protocol = opt.protocol;
   progress("plan: " + opt.job.planner + " planner, hand " + hand.name + ", object " +
-               mesh->name + " (" + std::to_string(mesh->triangles.size()) + " triangles), up to " +
-               std::to_string(opt.job.plan.grasps) + " grasps within " +
-               fixed(opt.job.plan.time_limit_s, 0) + " s");
+               mesh->name + " (" + std::to_string(mesh->triangles.size()) + " triangles), " +
+               std::to_string(opt.job.plan.grasps) +
+               (validated ? " grasps that hold in physics within a budget of " +
+                                fixed(validation.budget_s, 0) + " s"
+                          : " grasps within " + fixed(opt.job.plan.time_limit_s, 0) + " s"));
   auto t = Clock::now();
   RunReport& report = out.report;
-  report.plan = plan_job(opt.job, *mesh, object_path, hand);
+  if (validated)
+    report.plan = plan_validated_grasps(opt.job, validation, base, *mesh, object_path, hand,
+                                        opt.jobs, progress);
+  else
+    report.plan = plan_job(opt.job, *mesh, object_path, hand);
   report.plan_wall_s = seconds_since(t);
   const PlanDocument& plan = report.plan;
   const std::string plan_path = (fs::path(opt.out_dir) / "plan.json").string();
@@ -69,9 +83,20 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   // plan.json` later reproduces these outcomes exactly.
   const PlanDocument written = plan_from_json(read_plan_json(plan_path), hand, plan_path);
   const int n = static_cast<int>(plan.grasps.size());
-  progress("plan: " + std::to_string(n) + " force-closure grasp(s), " +
-               std::to_string(plan.stats.attempts) + " attempts");
+  if (plan.validation)
+    progress("plan: " + validation_stats_line(plan.validation->stats, plan.params.grasps));
+  else
+    progress("plan: " + std::to_string(n) + " force-closure grasp(s), " +
+             std::to_string(plan.stats.attempts) + " attempts");
   const std::string report_path = (fs::path(opt.out_dir) / "report.md").string();
+  if (n == 0 && plan.validation && plan.validation->stats.force_closure > 0) {
+    write_file_atomically(report_path, run_report_markdown(report));
+    throw std::runtime_error("run: no grasp of " + mesh->name + " with " + hand.name +
+                             " held in physics (" +
+                             validation_stats_line(plan.validation->stats, plan.params.grasps) +
+                             "); try a larger --budget, another --seed or --planner. Wrote " +
+                             plan_path + " and " + report_path);
+  }
   if (n == 0) {
     write_file_atomically(report_path, run_report_markdown(report));
     throw std::runtime_error(
@@ -86,8 +111,9 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   SimDocument& sim = out.sim;
   std::vector<std::vector<SnapshotFrame>> frames(static_cast<size_t>(n));
   if (physics) {
-    SimParams params = sim_params_for(opt.protocol);
+    SimParams params = base;
     params.contact = plan_contact_model(written);  // one friction model for planner and physics
+    if (validated) params.squeeze_shift_limit_m = validation.squeeze_shift_limit_m;
     t = Clock::now();
     const auto hooks = [&](int k) -> PhaseHook {
       if (!opt.render) return {};

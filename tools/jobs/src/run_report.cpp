@@ -1,4 +1,6 @@
 #include "cordgrasp/jobs/run_report.h"
+
+#include "cordgrasp/jobs/plan_validated_grasps.h"
 #include "cordgrasp/jobs/text_format.h"
 
 #include <cmath>
@@ -49,8 +51,23 @@ std::string run_report_markdown(const RunReport& rep) {
        << "\n";
   else
     md << "- Physics: skipped (`--tests none`)\n";
+  if (plan.validation) {
+    const ValidationParams& v = plan.validation->params;
+    md << "- Validated planning: accepted when held in ≥ " << v.min_held << " of " << v.trials
+       << " trials (" << v.tests << ", " << to_string(v.protocol) << " protocol), squeeze shift "
+       << "limit " << num(1e3 * v.squeeze_shift_limit_m, "%.0f") << " mm, grasps differ by ≥ "
+       << num(1e3 * v.min_gcp_distance_m, "%.0f") << " mm or ≥ "
+       << num(v.min_hand_turn_deg, "%.0f") << "°, budget " << num(v.budget_s) << " s\n";
+  }
   md << "\n## Result\n\n";
   const int n = static_cast<int>(plan.grasps.size());
+  if (plan.validation)
+    md << "Validated planning: " << validation_stats_line(plan.validation->stats, plan.params.grasps)
+       << ".\n\n";
+  if (n == 0 && plan.validation && plan.validation->stats.force_closure > 0) {
+    md << "**No grasp held** in physics.\n";
+    return md.str();
+  }
   if (n == 0) {
     md << "**No force-closure grasp found** in " << num(s.total_s) << " s (" << s.attempts
        << " attempts: " << s.not_force_closure << " not force closure, " << s.one_contact
@@ -69,8 +86,10 @@ std::string run_report_markdown(const RunReport& rep) {
     md << " Physics: **" << held << " of " << rep.sim->results.size() << " held** through "
        << to_string(rep.sim->tests) << ".";
   }
-  md << "\n\n| # | α [rad] | ε | χ [mm²] | region | contacts | physics | max penetration [mm] |\n"
-     << "|---|---|---|---|---|---|---|---|\n";
+  const bool validated = plan.validation.has_value();
+  md << "\n\n| # | α [rad] | ε | χ [mm²] | region | contacts | physics | max penetration [mm] |"
+     << (validated ? " held trials | squeeze shift [mm] |" : "") << "\n"
+     << "|---|---|---|---|---|---|---|---|" << (validated ? "---|---|" : "") << "\n";
   for (int k = 0; k < n; ++k) {
     const Grasp& g = plan.grasps[static_cast<size_t>(k)];
     md << "| " << k << " | " << num(g.alpha_rad, "%.3f") << " | " << num(g.epsilon, "%.4f")
@@ -84,10 +103,16 @@ std::string run_report_markdown(const RunReport& rep) {
     if (r) {
       double pen = 0.0;
       for (const PhaseResult& p : r->phases) pen = std::max(pen, p.max_penetration_m);
-      md << outcome_text(*r) << " | " << num(pen * 1e3, "%.2f") << " |\n";
+      md << outcome_text(*r) << " | " << num(pen * 1e3, "%.2f") << " |";
     } else {
-      md << "– | – |\n";
+      md << "– | – |";
     }
+    if (validated) {
+      const GraspValidation& gv = plan.validation->grasps[static_cast<size_t>(k)];
+      md << " " << gv.held_trials << " / " << gv.trials << " | "
+         << num(1e3 * gv.squeeze_shift_m, "%.1f") << " |";
+    }
+    md << "\n";
   }
   md << "\nα: skewness (0 = the hand's axis on the object's principal axis; "
         "docs/algorithm.md §9). ε: wrench-space quality (docs/algorithm.md §8). χ: XOR measure "

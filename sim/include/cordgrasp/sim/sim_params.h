@@ -118,6 +118,9 @@ struct SimParams {
   // --- Object ------------------------------------------------------------------------------
   /// Object density [kg/m³] (mass = density × closed volume); half water: hollow objects.
   double density_kgm3 = 500.0;
+  /// Open (non-watertight) meshes: the mass is density × surface area × this shell thickness,
+  /// at most density × convex-hull volume; 0: the hull's volume (docs/physics.md §2) [m].
+  double open_mesh_shell_m = 0.01;
   /// Object mass [kg] overriding density × volume (CLI --mass); the inertia scales with it.
   std::optional<double> mass_kg;
   /// Collision shape of the object; kAuto: HACD parts hold the most grasps on handles.
@@ -218,6 +221,9 @@ struct SimParams {
   double drop_distance_m = 0.10;     ///< a phase stops early once the object is this far off
   /// Settle shift beyond which the preshape overlaps the object (preshape_overlap) [m].
   double settle_shift_tolerance_m = 1e-3;
+  /// Early rejection: a grasp whose object moved farther than this from its planned pose in
+  /// the hand while closing is slipped in close, before lift and shake (0: off) [m].
+  double squeeze_shift_limit_m = 0.0;
 
   // --- Tracing -----------------------------------------------------------------------------
   /// > 0: the phase hook also gets a snapshot this often inside the phases [s]; 0: off.
@@ -235,6 +241,7 @@ struct SimParams {
                  CORDGRASP_NVP(cfm), CORDGRASP_NVP(linear_slop_m), CORDGRASP_NVP(gear_erp),
                  CORDGRASP_NVP(solver_residual_threshold), CORDGRASP_NVP(cone_friction),
                  CORDGRASP_NVP(articulated_warmstarting), CORDGRASP_NVP(density_kgm3),
+                 CORDGRASP_NVP(open_mesh_shell_m),
                  CORDGRASP_NVP(mass_kg), CORDGRASP_NVP(object_shape),
                  CORDGRASP_NVP(convex_volume_ratio), CORDGRASP_NVP(decomposition),
                  CORDGRASP_NVP(decomposition_cache_dir), CORDGRASP_NVP(close_speed),
@@ -261,7 +268,8 @@ struct SimParams {
                  CORDGRASP_NVP(no_contact_exit_time_s), CORDGRASP_NVP(held_translation_m),
                  CORDGRASP_NVP(held_rotation_rad), CORDGRASP_NVP(contact_distance_m),
                  CORDGRASP_NVP(unstable_speed_mps), CORDGRASP_NVP(drop_distance_m),
-                 CORDGRASP_NVP(settle_shift_tolerance_m), CORDGRASP_NVP(trace_interval_s));
+                 CORDGRASP_NVP(settle_shift_tolerance_m), CORDGRASP_NVP(squeeze_shift_limit_m),
+                 CORDGRASP_NVP(trace_interval_s));
   }
 };
 

@@ -21,6 +21,9 @@ enum class Outcome {
 /// "held", "slipped", "dropped", "unstable", "not_run".
 const char* to_string(Outcome outcome);
 
+/// Parses the names of to_string(Outcome). @throws std::invalid_argument otherwise.
+Outcome parse_outcome(const std::string& text);
+
 /// What one phase did and measured. Poses compare the object in the hand base frame with
 /// its pose right after closing (for settle and close: with the planned pose).
 struct PhaseResult {
@@ -48,7 +51,7 @@ struct SimObjectInfo {
   int parts = 1;                  ///< convex parts (1 for a hull; triangles for GImpact)
   double mass_kg = 0.0;
   double volume_m3 = 0.0;         ///< volume the mass came from [m³]
-  bool closed = false;            ///< closed mesh: closed volume; open: convex-hull volume
+  bool closed = false;            ///< closed mesh: closed volume; open: shell or hull volume
   Eigen::Vector3d com_O = Eigen::Vector3d::Zero();  ///< centre of mass in the object frame [m]
   Eigen::Vector3d principal_inertia_kgm2 = Eigen::Vector3d::Zero();  ///< about the COM
   double decomposition_s = 0.0;   ///< HACD time (0 when cached or unused) [s]
@@ -68,6 +71,8 @@ struct SimResult {
   /// collision-free against the mesh) the collision shape — hull or convex parts — covers space
   /// the mesh leaves free, and the outcome tests that shape more than the grasp.
   bool preshape_overlap = false;
+  /// Close moved the object past SimParams::squeeze_shift_limit_m: slipped before the tests.
+  bool rejected_in_close = false;
   bool held() const { return outcome == Outcome::kHeld; }
   /// The phase called `name`, or nullptr.
   const PhaseResult* phase(const std::string& name) const;

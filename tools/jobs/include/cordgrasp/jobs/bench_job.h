@@ -18,6 +18,7 @@
 #include "cordgrasp/core/grasp.h"
 #include "cordgrasp/core/hand_model.h"
 #include "cordgrasp/core/mesh.h"
+#include "cordgrasp/jobs/grasp_validation.h"
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/sim/sim_params.h"
 
@@ -34,6 +35,9 @@ struct BenchParams {
   std::string tests = "lift,shake";   ///< physics tests on each attempt's first grasp; "none"
   Protocol protocol = Protocol::kQuick;  ///< physics protocol preset
   std::string sim_cache_dir;          ///< on-disk convex decomposition cache ("" = memory only)
+  /// Set: each attempt plans with plan_validated_grasps (its tests and protocol: from above)
+  /// and fills the validated_* columns.
+  std::optional<ValidationParams> validation;
 };
 
 /// One attempt: plan (and validate the first grasp of) one object with one hand and planner.
@@ -90,6 +94,12 @@ struct BenchRow {
   std::string sim_outcome;                         ///< overall; "" = not simulated
   std::optional<double> sim_wall_s;                ///< [s]
   double object_scale = 1.0;                       ///< --scale the object was loaded with
+  /// Validated planning (BenchParams::validation; unset otherwise): accepted grasps,
+  /// force-closure candidates, candidates simulated, rejected early by the squeeze shift, held
+  /// as planned, CPU to the first accepted grasp [s] and of the whole plan [s].
+  std::optional<int> validated_accepted, validated_candidates, validated_simulated,
+      validated_rejected_early, validated_held_as_planned;
+  std::optional<double> validated_first_accepted_cpu_s, validated_cpu_s;
 };
 
 /// Column names of results.csv, in order.

@@ -20,6 +20,8 @@ struct BenchRunParams {
   Protocol protocol = Protocol::kQuick; ///< physics protocol preset
   std::string cache_dir;                ///< on-disk convex decomposition cache ("" = none)
   int jobs = 1;                         ///< threads
+  bool validate = false;                ///< validated planning per attempt (validated_* columns)
+  ValidationParams validation;          ///< its settings (tests, protocol: from above)
   std::string shard;                    ///< "k/N": one deterministic slice ("" = all)
   bool no_sheets = false;               ///< no contact sheet PNGs
   std::string sheet_size = "480x360";   ///< contact sheet tile size WxH [px]

@@ -8,6 +8,7 @@
 #include "cordgrasp/core/grasp_quality.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/sim/sim_params.h"
+#include "cordgrasp/sim/sim_result.h"
 
 namespace cordgrasp {
 
@@ -30,5 +31,6 @@ inline void parse_name(const std::string& text, SqueezeDirection* e) {
 }
 inline void parse_name(const std::string& text, WorldFrame* e) { *e = parse_world_frame(text); }
 inline void parse_name(const std::string& text, Protocol* e) { *e = parse_protocol(text); }
+inline void parse_name(const std::string& text, Outcome* e) { *e = parse_outcome(text); }
 
 }  // namespace cordgrasp

@@ -48,6 +48,12 @@ Mesh load_job_mesh(const PlanJobParams& p, const std::string& object_path);
 /// soft-finger radius): the physics of validate, run and bench uses it too.
 ContactModel plan_contact_model(const PlanDocument& plan);
 
+/// The document plan_job() fills, before any planning: the inputs and the parameters as they
+/// will be planned with (seeds, time limit, soft-finger radius resolved). @throws
+/// std::invalid_argument for an unknown planner.
+PlanDocument plan_document_for(const PlanJobParams& p, const Mesh& mesh,
+                               const std::string& object_path, const HandModel& hand);
+
 /// Plans grasps on `mesh` (loaded from `object_path`) with `hand`: the document plan.json
 /// holds. Deterministic for a given seed (timings aside).
 PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::string& object_path,

@@ -19,7 +19,10 @@
 //             without one), alpha_approach_rad (α of the GCP z axis; when absent, as
 //             alpha_rad), chi_m2 (null: generic), region_rank (null),
 //             region (null: generic; layout of region_json.h: cords, P1, P_l, P_r, ...),
-//             timings_s: {exploration, finger, quality}}]
+//             timings_s: {exploration, finger, quality},
+//             validation (validated plans only): every GraspValidation field}]
+//   validation (validated plans only): {parameters: every ValidationParams field,
+//                                        stats: every ValidationStats field}
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -30,6 +33,7 @@
 #include "cordgrasp/core/grasp.h"
 #include "cordgrasp/core/grasp_plan.h"
 #include "cordgrasp/core/hand_model.h"
+#include "cordgrasp/jobs/grasp_validation.h"
 
 namespace cordgrasp {
 
@@ -50,6 +54,9 @@ struct PlanDocument {
   std::optional<CordParams> cord;  ///< cord planner: exploration as run (seed, time limit)
   PlanStats stats;
   std::vector<Grasp> grasps;
+  /// Validated planning (plan_validated_grasps): its settings, counts and one verdict per grasp;
+  /// unset for a plan of force-closure grasps only.
+  std::optional<PlanValidation> validation;
 };
 
 /// JSON of a plan (layout above); joint and link names come from `hand`.

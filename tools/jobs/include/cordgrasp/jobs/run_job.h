@@ -1,8 +1,10 @@
 #pragma once
 // The main job: plan → validate in physics → render → report.md, into one output folder.
 #include <functional>
+#include <optional>
 #include <string>
 
+#include "cordgrasp/jobs/grasp_validation.h"
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/render_options.h"
 #include "cordgrasp/jobs/run_report.h"
@@ -19,6 +21,12 @@ struct RunParams {
   std::string tests = "lift,shake";  ///< physics tests (lift, shake, gravity6) or "none"
   Protocol protocol = Protocol::kQuick;  ///< physics protocol preset
   int jobs = 1;                ///< physics threads (one world each); results independent of it
+  /// Plan only grasps that hold (plan_validated_grasps, with `tests` and `protocol`); false:
+  /// force-closure grasps as planned, validated afterwards. Ignored with tests "none".
+  bool validate = true;
+  ValidationParams validation;  ///< validated planning (its tests, protocol: from above)
+  std::optional<double> mass_kg;       ///< object mass override [kg]
+  std::optional<double> density_kgm3;  ///< object density override [kg/m³]
   PictureOptions picture;      ///< size of the pictures (view: iso)
   bool render = true;          ///< write PNGs (planned grasps, physics frames, contact sheet)
   std::string out_dir;         ///< output folder, created if missing
@@ -29,7 +37,7 @@ struct RunOutcome {
   RunReport report;            ///< report.plan holds the plan; report.sim is cleared
   SimDocument sim;             ///< empty when tests == "none"
   std::string plan_path, sim_path, report_path;  ///< files written ("" when not written)
-  int held = 0;                ///< grasps held through the tests
+  int held = 0;                ///< grasps held through the tests (the planned pose, once)
 };
 
 /// One progress line ("plan: 3 force-closure grasp(s), 41 attempts").
@@ -38,7 +46,8 @@ using RunProgress = std::function<void(const std::string&)>;
 /// Runs the whole job and writes plan.json, sim.json, report.md and PNGs to p.out_dir.
 /// Physics sees the plan as written to plan.json, so `cordgrasp validate --plan` reproduces
 /// its outcomes. @throws InputError for bad inputs (before any work), std::runtime_error when
-/// no force-closure grasp was found (plan.json and report.md are written first).
+/// no force-closure grasp was found, or with p.validate none held (plan.json and report.md are
+/// written first).
 RunOutcome run_job(const RunParams& p, const RunProgress& progress = {});
 
 }  // namespace cordgrasp

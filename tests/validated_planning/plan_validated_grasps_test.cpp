@@ -1,0 +1,142 @@
+// Validated planning (docs/algorithm.md §13): accepted grasps hold when the written plan.json is
+// validated again by a separate `cordgrasp validate`, and differ pairwise by the diversity
+// threshold. The parallel gripper on the box keeps the CPU small (< 2 s per plan).
+#include "cordgrasp/jobs/plan_validated_grasps.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+#include <nlohmann/json.hpp>
+
+#include "cordgrasp/core/error.h"
+#include "cordgrasp/core/hand_io.h"
+#include "cordgrasp/jobs/plan_json.h"
+#include "test_paths.h"
+
+namespace cordgrasp {
+namespace {
+
+constexpr int kTrials = 3;
+constexpr int kMinHeld = 2;
+constexpr double kBudget_s = 60.0;  ///< not reached on the box (about 1 s)
+
+struct BoxPlan {
+  HandModel hand = load_hand("parallel_gripper");
+  std::string object = test::source_dir() + "/assets/objects/box.obj";
+  PlanJobParams job;
+  ValidationParams v;
+  Mesh mesh;
+
+  explicit BoxPlan(int grasps) {
+    job.plan.grasps = grasps;
+    v.trials = kTrials;
+    v.min_held = kMinHeld;
+    v.budget_s = kBudget_s;
+    mesh = load_job_mesh(job, object);
+  }
+  PlanDocument plan() const {
+    return plan_validated_grasps(job, v, SimParams{}, mesh, object, hand);
+  }
+};
+
+std::string temp_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("cordgrasp_validated_" + name + "_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+TEST(PlanValidatedGrasps, AcceptedGraspsHoldWhenTheWrittenPlanIsValidatedAgain) {
+  const BoxPlan box(2);
+  const PlanDocument plan = box.plan();
+  ASSERT_EQ(plan.grasps.size(), 2u);
+  ASSERT_TRUE(plan.validation.has_value());
+  const ValidationStats& s = plan.validation->stats;
+  EXPECT_EQ(s.accepted, 2);
+  EXPECT_GE(s.simulated, s.accepted + s.rejected_early);
+  EXPECT_GE(s.force_closure, s.simulated + s.similar);
+  ASSERT_TRUE(s.first_accepted_s.has_value());
+  for (const GraspValidation& g : plan.validation->grasps) EXPECT_GE(g.held_trials, kMinHeld);
+
+  const std::string dir = temp_dir("revalidate");
+  const std::string plan_path = dir + "/plan.json";
+  write_plan_file(plan_path, plan, box.hand);
+  // Other nudges than the planner's (seed 99), in a separate process.
+  const auto r = test::run_cordgrasp("validate --plan '" + plan_path + "' --tests lift,shake "
+                                     "--trials " + std::to_string(kTrials) +
+                                     " --seed 99 --out '" + dir + "/sim.json'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream in(dir + "/sim.json");
+  const nlohmann::json sim = nlohmann::json::parse(in);
+  ASSERT_EQ(sim.at("grasps").size(), 2u);
+  for (const auto& g : sim.at("grasps"))
+    EXPECT_GE(g.at("trials").at("held").get<int>(), kMinHeld) << g.dump();
+  std::filesystem::remove_all(dir);
+}
+
+TEST(PlanValidatedGrasps, AcceptedGraspsDifferPairwiseByTheDiversityThreshold) {
+  BoxPlan box(3);
+  box.v.min_gcp_distance_m = 0.02;  // stricter than the defaults, so near copies do occur
+  box.v.min_hand_turn_deg = 45.0;
+  const PlanDocument plan = box.plan();
+  ASSERT_GE(plan.grasps.size(), 2u);
+  EXPECT_GT(plan.validation->stats.similar, 0);
+  for (size_t a = 0; a < plan.grasps.size(); ++a)
+    for (size_t b = a + 1; b < plan.grasps.size(); ++b) {
+      const GraspPoseDistance d = grasp_pose_distance(plan.grasps[a], plan.grasps[b]);
+      EXPECT_TRUE(d.gcp_m >= box.v.min_gcp_distance_m ||
+                  d.hand_turn_rad >= box.v.min_hand_turn_deg * M_PI / 180.0)
+          << a << "," << b << ": " << d.gcp_m << " m, " << d.hand_turn_rad << " rad";
+    }
+}
+
+TEST(PlanValidatedGrasps, ValidationRecordRoundTripsThroughPlanJsonAndIsReadStrictly) {
+  const BoxPlan box(1);
+  const PlanDocument plan = box.plan();
+  ASSERT_EQ(plan.grasps.size(), 1u);
+  nlohmann::json j = plan_to_json(plan, box.hand);
+  const PlanDocument back = plan_from_json(j, box.hand, "plan.json");
+  ASSERT_TRUE(back.validation.has_value());
+  EXPECT_EQ(back.validation->grasps.size(), 1u);
+  EXPECT_EQ(back.validation->grasps[0].held_trials, plan.validation->grasps[0].held_trials);
+  EXPECT_EQ(back.validation->grasps[0].lift, plan.validation->grasps[0].lift);
+  EXPECT_EQ(back.validation->stats.accepted, plan.validation->stats.accepted);
+  EXPECT_EQ(back.validation->params.min_hand_turn_deg, box.v.min_hand_turn_deg);
+
+  nlohmann::json unknown = j;
+  unknown["grasps"][0]["validation"]["held"] = 1;
+  EXPECT_THROW(plan_from_json(unknown, box.hand, "plan.json"), InputError);
+  nlohmann::json missing = j;
+  missing["grasps"][0].erase("validation");
+  EXPECT_THROW(plan_from_json(missing, box.hand, "plan.json"), InputError);
+  nlohmann::json bad_outcome = j;
+  bad_outcome["grasps"][0]["validation"]["lift"] = "fine";
+  EXPECT_THROW(plan_from_json(bad_outcome, box.hand, "plan.json"), InputError);
+}
+
+TEST(GraspsDiffer, ByGcpDistanceOrHandTurn) {
+  ValidationParams v;  // 1 cm, 20°
+  Grasp a, b;
+  EXPECT_FALSE(grasps_differ(a, b, v));
+  b.X_OG.translation() = Eigen::Vector3d(0.009, 0, 0);
+  b.X_OB.linear() = Eigen::AngleAxisd(19.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ()).matrix();
+  EXPECT_FALSE(grasps_differ(a, b, v));
+  b.X_OG.translation() = Eigen::Vector3d(0.011, 0, 0);
+  EXPECT_TRUE(grasps_differ(a, b, v));
+  b.X_OG.translation().setZero();
+  b.X_OB.linear() = Eigen::AngleAxisd(21.0 * M_PI / 180.0, Eigen::Vector3d::UnitX()).matrix();
+  EXPECT_TRUE(grasps_differ(a, b, v));
+  EXPECT_NEAR(grasp_pose_distance(a, b).hand_turn_rad, 21.0 * M_PI / 180.0, 1e-12);
+}
+
+TEST(PlanValidatedGrasps, RejectsMinHeldAboveTrials) {
+  BoxPlan box(1);
+  box.v.min_held = kTrials + 1;
+  EXPECT_THROW(box.plan(), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace cordgrasp

@@ -1,0 +1,57 @@
+#include "validation_options.h"
+
+#include "options.h"
+
+namespace cordgrasp::cli {
+
+void add_validation_options(CLI::App* cmd, ValidationParams& v) {
+  cmd->add_option("--trials", v.trials,
+                  "Physics trials per candidate: as planned, then nudged by --trial-offset and "
+                  "--trial-turn")
+      ->check(whole_number_in(1, 1000))
+      ->capture_default_str();
+  cmd->add_option("--min-held", v.min_held,
+                  "A candidate is accepted when held in at least this many trials")
+      ->check(whole_number_in(1, 1000))
+      ->capture_default_str();
+  cmd->add_option("--budget", v.budget_s,
+                  "CPU budget of planning and physics together, all threads [s] (replaces "
+                  "--time-limit)")
+      ->check(number_in(1e-3, 1e6))
+      ->capture_default_str();
+  cmd->add_option("--squeeze-shift-limit", v.squeeze_shift_limit_m,
+                  "Candidates whose object moves farther while closing are dropped before lift "
+                  "[m]; 0: off")
+      ->check(number_in(0.0, 10.0))
+      ->capture_default_str();
+  cmd->add_option("--min-gcp-distance", v.min_gcp_distance_m,
+                  "Accepted grasps differ: GCPs at least this far apart [m]...")
+      ->check(number_in(0.0, 10.0))
+      ->capture_default_str();
+  cmd->add_option("--min-hand-turn", v.min_hand_turn_deg,
+                  "...or hand orientations at least this far apart [deg]")
+      ->check(number_in(0.0, 180.0))
+      ->capture_default_str();
+  cmd->add_option("--trial-offset", v.perturbation.offset_m,
+                  "Hand offset of the nudged trials [m], random direction")
+      ->check(number_in(0.0, 0.1))
+      ->capture_default_str();
+  cmd->add_option("--trial-turn", v.perturbation.turn_rad,
+                  "Hand turn of the nudged trials about the GCP [rad], random axis")
+      ->check(number_in(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--trial-seed", v.trial_seed, "Seed of the nudges' random directions")
+      ->check(seed_value())
+      ->capture_default_str();
+}
+
+void add_object_mass_options(CLI::App* cmd, std::optional<double>& mass_kg,
+                             std::optional<double>& density_kgm3) {
+  cmd->add_option("--mass", mass_kg, "Object mass [kg] (default: from the volume, "
+                                     "docs/physics.md §2)")
+      ->check(number_in(1e-6, 1e4));
+  cmd->add_option("--density", density_kgm3, "Object density [kg/m^3] (default 500)")
+      ->check(number_in(1e-3, 1e5));
+}
+
+}  // namespace cordgrasp::cli

@@ -1,0 +1,19 @@
+#pragma once
+// Command-line options of validated planning (`plan --validate`, `run`), bound to
+// ValidationParams and SimParams fields.
+#include <CLI/CLI.hpp>
+#include <optional>
+
+#include "cordgrasp/jobs/grasp_validation.h"
+
+namespace cordgrasp::cli {
+
+/// Adds --trials, --min-held, --budget, --squeeze-shift-limit, --min-gcp-distance,
+/// --min-hand-turn, --trial-offset, --trial-turn and --trial-seed, bound to `v`.
+void add_validation_options(CLI::App* cmd, ValidationParams& v);
+
+/// Adds --mass [kg] and --density [kg/m³] (object mass overrides of the physics).
+void add_object_mass_options(CLI::App* cmd, std::optional<double>& mass_kg,
+                             std::optional<double>& density_kgm3);
+
+}  // namespace cordgrasp::cli

@@ -1,0 +1,124 @@
+#pragma once
+// What validated planning (plan_validated_grasps.h) records: its settings, the physics verdict
+// on each accepted grasp and the plan's counts; plan.json holds all three (plan_json.h).
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cordgrasp/core/grasp.h"
+#include "cordgrasp/core/grasp_perturbation.h"
+#include "cordgrasp/core/serialize.h"
+#include "cordgrasp/sim/sim_params.h"
+#include "cordgrasp/sim/sim_result.h"
+
+namespace cordgrasp {
+
+/// Settings of validated planning (docs/algorithm.md §13); the planner's own settings and the
+/// number of grasps wanted (PlanParams::grasps) come from PlanJobParams.
+struct ValidationParams {
+  std::string tests = "lift,shake";     ///< physics tests of every trial (validate --tests)
+  Protocol protocol = Protocol::kQuick;  ///< physics protocol preset of every trial
+  int trials = 3;                        ///< trials per candidate: as planned, then nudged
+  int min_held = 2;                      ///< accepted when held in at least this many trials
+  /// Cap on the CPU time of planning and physics together (all threads of the process) [s];
+  /// the planner's own time limit (PlanParams::time_limit_s) is ignored.
+  double budget_s = 30.0;
+  /// Early rejection (SimParams::squeeze_shift_limit_m): a candidate whose object moves
+  /// farther than this while closing is dropped before lift and shake [m]; 0: off.
+  double squeeze_shift_limit_m = 0.05;
+  /// Two accepted grasps differ when their GCPs are at least this far apart... [m]
+  double min_gcp_distance_m = 0.01;
+  /// ...or their hand orientations differ by at least this angle [deg].
+  double min_hand_turn_deg = 20.0;
+  PerturbationParams perturbation;  ///< nudge of trials 2..N (as `validate --trials`)
+  std::uint64_t trial_seed = 1;     ///< seed of the nudges' directions
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    visit_fields(a, CORDGRASP_NVP(tests), CORDGRASP_NVP(protocol), CORDGRASP_NVP(trials),
+                 CORDGRASP_NVP(min_held), CORDGRASP_NVP(budget_s),
+                 CORDGRASP_NVP(squeeze_shift_limit_m), CORDGRASP_NVP(min_gcp_distance_m),
+                 CORDGRASP_NVP(min_hand_turn_deg), CORDGRASP_NVP(perturbation),
+                 CORDGRASP_NVP(trial_seed));
+  }
+};
+
+/// Physics verdict on one accepted grasp.
+struct GraspValidation {
+  int held_trials = 0;  ///< trials in which it held
+  int trials = 0;       ///< trials run
+  /// Outcome of each phase in the first trial (the grasp as planned).
+  Outcome settle = Outcome::kNotRun;
+  Outcome close = Outcome::kNotRun;
+  Outcome lift = Outcome::kNotRun;
+  Outcome shake = Outcome::kNotRun;
+  Outcome gravity6 = Outcome::kNotRun;
+  double squeeze_shift_m = 0.0;  ///< object moved in the hand while closing, first trial [m]
+  double mass_kg = 0.0;          ///< object mass as simulated [kg]
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    visit_fields(a, CORDGRASP_NVP(held_trials), CORDGRASP_NVP(trials), CORDGRASP_NVP(settle),
+                 CORDGRASP_NVP(close), CORDGRASP_NVP(lift), CORDGRASP_NVP(shake),
+                 CORDGRASP_NVP(gravity6), CORDGRASP_NVP(squeeze_shift_m),
+                 CORDGRASP_NVP(mass_kg));
+  }
+};
+
+/// Counts of one validated plan; times from the plan's start, wall clock unless named CPU [s].
+struct ValidationStats {
+  int attempts = 0;          ///< finger-stage runs of the planner
+  int force_closure = 0;     ///< force-closure candidates the planner gave
+  int similar = 0;           ///< candidates skipped as near copies of an accepted grasp
+  int simulated = 0;         ///< candidates given to physics
+  int rejected_early = 0;    ///< of those, dropped by the squeeze shift before lift
+  int held_as_planned = 0;   ///< of those, held in the first trial (the grasp as planned)
+  int trials_run = 0;        ///< physics trials run in all
+  int accepted = 0;          ///< candidates held in ≥ min_held trials
+  std::optional<double> first_accepted_s;  ///< time to the first accepted grasp
+  double planning_s = 0.0;   ///< exploration and finger stage
+  double physics_s = 0.0;    ///< physics trials
+  double total_s = 0.0;      ///< the whole plan
+  std::optional<double> first_accepted_cpu_s;  ///< CPU time to the first accepted grasp
+  double cpu_s = 0.0;        ///< CPU time of the whole plan (all threads)
+  bool budget_spent = false;  ///< stopped by budget_s before enough grasps were accepted
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    visit_fields(a, CORDGRASP_NVP(attempts), CORDGRASP_NVP(force_closure),
+                 CORDGRASP_NVP(similar), CORDGRASP_NVP(simulated),
+                 CORDGRASP_NVP(rejected_early), CORDGRASP_NVP(held_as_planned),
+                 CORDGRASP_NVP(trials_run),
+                 CORDGRASP_NVP(accepted), CORDGRASP_NVP(first_accepted_s),
+                 CORDGRASP_NVP(planning_s), CORDGRASP_NVP(physics_s), CORDGRASP_NVP(total_s),
+                 CORDGRASP_NVP(first_accepted_cpu_s), CORDGRASP_NVP(cpu_s),
+                 CORDGRASP_NVP(budget_spent));
+  }
+};
+
+/// Validated planning's record in a plan: settings, counts, one verdict per grasp.
+struct PlanValidation {
+  ValidationParams params;
+  ValidationStats stats;
+  std::vector<GraspValidation> grasps;  ///< one per plan grasp, in the same order
+};
+
+/// GCP distance of two grasps [m] and the angle between their hand orientations [rad].
+struct GraspPoseDistance {
+  double gcp_m = 0.0;
+  double hand_turn_rad = 0.0;
+};
+
+/// Pose distance of grasps a and b (X_OG translations; rotation from X_OB_a to X_OB_b).
+GraspPoseDistance grasp_pose_distance(const Grasp& a, const Grasp& b);
+
+/// True when a and b differ: GCPs ≥ min_gcp_distance_m apart or hands turned ≥
+/// min_hand_turn_deg apart.
+bool grasps_differ(const Grasp& a, const Grasp& b, const ValidationParams& p);
+
+}  // namespace cordgrasp

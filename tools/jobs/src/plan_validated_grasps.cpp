@@ -1,0 +1,283 @@
+#include "cordgrasp/jobs/plan_validated_grasps.h"
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "cordgrasp/collision/bullet_hand_collider.h"
+#include "cordgrasp/core/explore_cords.h"
+#include "cordgrasp/core/palm_width.h"
+#include "cordgrasp/core/plan_cord_grasps.h"
+#include "cordgrasp/core/plan_generic_grasps.h"
+#include "cordgrasp/jobs/text_format.h"
+#include "cordgrasp/jobs/validate_plan.h"
+#include "cordgrasp/sim/validate_grasp.h"
+#include "parallel_for.h"
+
+namespace cordgrasp {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// CPU time of this process, all threads [s].
+double process_cpu_s() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+/// Adds the counts of one planner call to the running total (times add up too).
+void add_stats(PlanStats& total, const PlanStats& s) {
+  total.regions_processed += s.regions_processed;
+  total.attempts += s.attempts;
+  total.force_closure += s.force_closure;
+  total.no_contact += s.no_contact;
+  total.one_contact += s.one_contact;
+  total.cannot_retreat += s.cannot_retreat;
+  total.not_force_closure += s.not_force_closure;
+  total.setup_s += s.setup_s;
+  total.finger_s += s.finger_s;
+  total.quality_s += s.quality_s;
+}
+
+/// Hands out the planner's force-closure candidates one at a time, best first: the cord planner
+/// continues in its region order after the last candidate's region and, once every region is
+/// processed, explores again with the next seed (region_rank is then the rank in that
+/// exploration); the generic planner is called again with the next seed.
+class CandidateSource {
+ public:
+  CandidateSource(const PlanDocument& doc, const Mesh& mesh, const HandModel& hand)
+      : doc_(doc), mesh_(mesh), hand_(hand), collider_(make_bullet_hand_collider(hand, mesh)) {}
+
+  /// The next candidate, or nullopt when the planner has none left within `time_left_s`.
+  std::optional<Grasp> next(double time_left_s, PlanStats& stats) {
+    if (time_left_s <= 0.0) return std::nullopt;
+    PlanParams params = doc_.params;
+    params.grasps = 1;
+    params.time_limit_s = time_left_s;
+    if (doc_.planner == "cord") {
+      // Every region processed: explore again with the next seed (new regions), a few times.
+      while (order_.empty() && explorations_ < kMaxExplorations) explore(time_left_s, stats);
+      if (order_.empty()) return std::nullopt;
+      const PlanResult r = plan_cord_grasps_from_regions(mesh_, hand_, *collider_, regions_,
+                                                         params, 0.0, &order_);
+      add_stats(stats, r.stats);
+      if (r.grasps.empty()) {
+        order_.clear();
+        return next(time_left_s - r.stats.total_s, stats);
+      }
+      Grasp g = r.grasps.front();
+      const int rank = *g.region_rank;  // position in order_
+      order_.erase(order_.begin(), order_.begin() + rank + 1);
+      g.region_rank = offset_ + rank;
+      g.times.exploration_s = exploration_s_;
+      offset_ += rank + 1;
+      return g;
+    }
+    params.seed = doc_.params.seed + calls_++;
+    params.quality.seed = params.seed;
+    const PlanResult r = plan_generic_grasps(mesh_, hand_, *collider_, params);
+    add_stats(stats, r.stats);
+    if (r.grasps.empty()) return std::nullopt;
+    return r.grasps.front();
+  }
+
+ private:
+  void explore(double time_left_s, PlanStats& stats) {
+    const auto start = Clock::now();
+    CordParams explore = *doc_.cord;
+    explore.seed += static_cast<std::uint64_t>(explorations_);
+    if (explore.time_limit_s <= 0.0 || explore.time_limit_s > time_left_s)
+      explore.time_limit_s = time_left_s;
+    const double w_palm = palm_width(hand_);
+    regions_ = explore_cords(mesh_, w_palm, explore);
+    order_ = cord_region_order(regions_, w_palm, explore);
+    exploration_s_ = seconds_since(start);
+    offset_ = 0;
+    stats.regions += static_cast<int>(regions_.size());
+    stats.exploration_s += exploration_s_;
+    ++explorations_;
+  }
+
+  const PlanDocument& doc_;
+  const Mesh& mesh_;
+  const HandModel& hand_;
+  std::unique_ptr<HandObjectCollider> collider_;
+  static constexpr int kMaxExplorations = 4;  ///< the first and three with later seeds
+  int explorations_ = 0;
+  std::vector<GraspRegion> regions_;
+  std::vector<int> order_;  ///< regions not yet processed, in processing order
+  int offset_ = 0;          ///< regions processed before order_.front()
+  double exploration_s_ = 0.0;
+  std::uint64_t calls_ = 0;
+};
+
+Outcome phase_outcome(const SimResult& r, const char* name) {
+  const PhaseResult* p = r.phase(name);
+  return p ? p->outcome : Outcome::kNotRun;
+}
+
+}  // namespace
+
+GraspPoseDistance grasp_pose_distance(const Grasp& a, const Grasp& b) {
+  GraspPoseDistance d;
+  d.gcp_m = (a.X_OG.translation() - b.X_OG.translation()).norm();
+  const Eigen::AngleAxisd turn(a.X_OB.linear().transpose() * b.X_OB.linear());
+  d.hand_turn_rad = std::abs(turn.angle());
+  return d;
+}
+
+bool grasps_differ(const Grasp& a, const Grasp& b, const ValidationParams& p) {
+  const GraspPoseDistance d = grasp_pose_distance(a, b);
+  return d.gcp_m >= p.min_gcp_distance_m || d.hand_turn_rad >= p.min_hand_turn_deg * M_PI / 180.0;
+}
+
+PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationParams& v,
+                                   const SimParams& sim_in, const Mesh& mesh,
+                                   const std::string& object_path, const HandModel& hand,
+                                   int jobs, const ValidatedPlanProgress& progress) {
+  if (v.trials < 1 || v.trials > 1000)
+    throw std::invalid_argument("plan_validated_grasps: trials must be in [1, 1000], got " +
+                                std::to_string(v.trials));
+  if (v.min_held < 1 || v.min_held > v.trials)
+    throw std::invalid_argument("plan_validated_grasps: min_held must be in [1, trials = " +
+                                std::to_string(v.trials) + "], got " +
+                                std::to_string(v.min_held));
+  const auto start = Clock::now();
+  const double cpu_start = process_cpu_s();
+  const auto cpu_used = [&] { return process_cpu_s() - cpu_start; };
+  const auto say = [&](const std::string& line) { if (progress) progress(line); };
+  PlanDocument doc = plan_document_for(job, mesh, object_path, hand);
+  doc.validation = PlanValidation{};
+  PlanValidation& record = *doc.validation;
+  record.params = v;
+  ValidationStats& vs = record.stats;
+  const SimTests tests = sim_tests_from_string(v.tests);
+  SimParams sim = sim_in;
+  apply_protocol(v.protocol, &sim);
+  sim.contact = plan_contact_model(doc);
+  sim.squeeze_shift_limit_m = v.squeeze_shift_limit_m;
+
+  const int wanted = std::max(1, doc.params.grasps);
+  CandidateSource source(doc, mesh, hand);
+  PlanStats& stats = doc.stats;
+  int candidate = -1;
+  while (static_cast<int>(doc.grasps.size()) < wanted) {
+    const double left_s = v.budget_s - cpu_used();
+    if (left_s <= 0.0) {
+      vs.budget_spent = true;
+      break;
+    }
+    const auto plan_start = Clock::now();
+    std::optional<Grasp> g = source.next(left_s, stats);
+    vs.planning_s += seconds_since(plan_start);
+    if (!g) {
+      vs.budget_spent = v.budget_s - cpu_used() <= 0.0;
+      break;
+    }
+    ++candidate;
+    if (!stats.first_force_closure_s) stats.first_force_closure_s = seconds_since(start);
+    const bool differs = std::all_of(doc.grasps.begin(), doc.grasps.end(),
+                                     [&](const Grasp& a) { return grasps_differ(a, *g, v); });
+    if (!differs) {
+      ++vs.similar;
+      say("candidate " + std::to_string(candidate) + ": a near copy of an accepted grasp");
+      continue;
+    }
+    // Trial 1 as planned: the cheap rejection happens here.
+    const auto physics_start = Clock::now();
+    ++vs.simulated;
+    const SimResult first = validate_grasp(mesh, hand, *g, sim, tests);
+    ++vs.trials_run;
+    if (first.rejected_in_close) {
+      ++vs.rejected_early;
+      vs.physics_s += seconds_since(physics_start);
+      const PhaseResult* close = first.phase("close");
+      say("candidate " + std::to_string(candidate) + ": rejected early, squeeze shift " +
+          fixed(1e3 * (close ? close->translation_m : 0.0), 0) + " mm");
+      continue;
+    }
+    // Nudged trials, `jobs` at a time, until the verdict is decided; the record keeps the
+    // trials a one-at-a-time run would have made, so it does not depend on `jobs`.
+    vs.held_as_planned += first.held() ? 1 : 0;
+    std::vector<Outcome> outcomes{first.outcome};
+    const auto decided = [&](const std::vector<Outcome>& o) {
+      const int held = count_held(o);
+      return held >= v.min_held || held + (v.trials - static_cast<int>(o.size())) < v.min_held;
+    };
+    while (!decided(outcomes)) {
+      const int from = static_cast<int>(outcomes.size());
+      const int batch = std::min(std::max(1, jobs), v.trials - from);
+      std::vector<Outcome> more(static_cast<size_t>(batch), Outcome::kNotRun);
+      parallel_for(batch, jobs, [&](int i) {
+        const int t = from + i;
+        const Grasp nudged = perturbed_grasp(
+            *g, v.perturbation, v.trial_seed + 1000 * static_cast<std::uint64_t>(candidate) + t);
+        more[static_cast<size_t>(i)] = validate_grasp(mesh, hand, nudged, sim, tests).outcome;
+      });
+      vs.trials_run += batch;
+      for (Outcome o : more) {
+        if (decided(outcomes)) break;
+        outcomes.push_back(o);
+      }
+    }
+    vs.physics_s += seconds_since(physics_start);
+    const int held = count_held(outcomes);
+    const bool accepted = held >= v.min_held;
+    say("candidate " + std::to_string(candidate) + ": held in " + std::to_string(held) + " / " +
+        std::to_string(outcomes.size()) + " trials" +
+        (accepted ? ", accepted (" + std::to_string(doc.grasps.size() + 1) + " / " +
+                        std::to_string(wanted) + ")"
+                  : std::string()));
+    if (!accepted) continue;
+    GraspValidation gv;
+    gv.held_trials = held;
+    gv.trials = static_cast<int>(outcomes.size());
+    gv.settle = phase_outcome(first, "settle");
+    gv.close = phase_outcome(first, "close");
+    gv.lift = phase_outcome(first, "lift");
+    gv.shake = phase_outcome(first, "shake");
+    gv.gravity6 = phase_outcome(first, "gravity6");
+    if (const PhaseResult* close = first.phase("close")) gv.squeeze_shift_m = close->translation_m;
+    gv.mass_kg = first.object.mass_kg;
+    record.grasps.push_back(gv);
+    doc.grasps.push_back(std::move(*g));
+    ++vs.accepted;
+    if (!vs.first_accepted_s) {
+      vs.first_accepted_s = seconds_since(start);
+      vs.first_accepted_cpu_s = cpu_used();
+    }
+  }
+  vs.attempts = stats.attempts;
+  vs.force_closure = stats.force_closure;
+  vs.total_s = seconds_since(start);
+  vs.cpu_s = cpu_used();
+  stats.total_s = vs.total_s;
+  stats.timed_out = vs.budget_spent;
+  return doc;
+}
+
+std::string validation_stats_line(const ValidationStats& s, int wanted) {
+  std::string line = "accepted " + std::to_string(s.accepted) + " / " + std::to_string(wanted) +
+                     " (" + std::to_string(s.force_closure) + " force-closure candidates of " +
+                     std::to_string(s.attempts) + " attempts: " + std::to_string(s.similar) +
+                     " near copies, " + std::to_string(s.simulated) + " simulated, " +
+                     std::to_string(s.rejected_early) + " rejected early, " +
+                     std::to_string(s.trials_run) + " trials; ";
+  if (s.first_accepted_cpu_s)
+    line += "first accepted after " + fixed(*s.first_accepted_cpu_s, 1) + " s CPU, ";
+  line += fixed(s.cpu_s, 1) + " s CPU in all" + (s.budget_spent ? ", budget spent)" : ")");
+  return line;
+}
+
+}  // namespace cordgrasp
