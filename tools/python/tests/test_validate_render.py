@@ -11,16 +11,17 @@ def plan(mug, hand):
 
 def test_validate_returns_the_sim_document(plan):
     sim = cordgrasp.validate(plan, tests="lift")
-    assert len(sim["results"]) == 1
-    result = sim["results"][0]
+    assert sim["format"] == "cordgrasp-sim" and len(sim["grasps"]) == 1
+    result = sim["grasps"][0]
     assert result["outcome"] in ("held", "slipped", "dropped", "unstable")
-    assert sim["tests"] == ["lift"] or "lift" in str(sim["tests"])
+    assert [p["name"] for p in result["phases"]][:3] == ["settle", "close", "lift"]
 
 
 def test_validate_is_deterministic_and_counts_trials(plan):
     a = cordgrasp.validate(plan, tests="lift", trials=2)
     b = cordgrasp.validate(plan, tests="lift", trials=2, jobs=2)
-    assert a["results"][0]["outcome"] == b["results"][0]["outcome"]
+    assert a["grasps"][0]["trials"] == b["grasps"][0]["trials"]
+    assert len(a["grasps"][0]["trials"]["outcomes"]) == 2
     with pytest.raises(ValueError, match="unknown name 'slow'"):
         cordgrasp.validate(plan, protocol="slow")
 
