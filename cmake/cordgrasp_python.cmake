@@ -14,14 +14,16 @@ if(CORDGRASP_BUILD_PYTHON)
   endif()
   if(Python_FOUND AND pybind11_FOUND)
     set(CORDGRASP_PYTHON_MODULE ON)
-    message(STATUS "cordgrasp: Python module for ${Python_EXECUTABLE} (pybind11 ${pybind11_VERSION})")
+    message(STATUS
+            "cordgrasp: Python module for ${Python_EXECUTABLE} (pybind11 ${pybind11_VERSION})")
   else()
     message(STATUS "cordgrasp: no Python module (needs python3-dev and pybind11-dev)")
   endif()
 endif()
 set(_cordgrasp_python_dir "lib/python3/dist-packages")
 if(Python_FOUND)
-  set(_cordgrasp_python_dir "lib/python${Python_VERSION_MAJOR}.${Python_VERSION_MINOR}/dist-packages")
+  set(_cordgrasp_python_dir
+      "lib/python${Python_VERSION_MAJOR}.${Python_VERSION_MINOR}/dist-packages")
 endif()
 set(CORDGRASP_PYTHON_INSTALL_DIR "${_cordgrasp_python_dir}" CACHE STRING
     "Where the Python package cordgrasp is installed, relative to the prefix")
