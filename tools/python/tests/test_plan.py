@@ -116,3 +116,11 @@ def test_call_overhead_is_small(mug, hand):
         overheads.append((wall - plan.job_wall_s) / plan.stats["total_s"])
     print("overhead fractions", overheads)
     assert min(overheads) < 0.05
+
+
+def test_assets_dir_is_the_source_tree_and_the_environment_overrides(monkeypatch, tmp_path):
+    assert (cordgrasp.assets_dir().rstrip("/")).endswith("assets")
+    monkeypatch.setenv("CORDGRASP_ASSETS_DIR", str(tmp_path))
+    assert cordgrasp.assets_dir() == str(tmp_path)
+    with pytest.raises(cordgrasp.InputError, match="no shipped hand"):
+        cordgrasp.load_hand("cordgrasp_sah")
