@@ -19,6 +19,8 @@ PKGS=(
   libembree-dev                           # ray queries on large meshes
   libgtest-dev libgmock-dev googletest
   libbenchmark-dev
+  python3 python3-dev pybind11-dev       # the Python module (tools/python)
+  python3-numpy python3-pytest            # its arrays and its test suite
 )
 
 missing=()

@@ -1,6 +1,8 @@
 // Where the shipped hands and objects live, and --hand / --object text resolved to files.
 #include "cordgrasp/core/assets.h"
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -16,12 +18,70 @@ namespace {
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
+// The folder of the file holding this code: the program, or the shared object (the Python
+// module) it is linked into; empty when unknown.
+fs::path code_dir() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&code_dir), &info) && info.dli_fname &&
+      *info.dli_fname) {
+    std::error_code ec;
+    const fs::path file = fs::canonical(info.dli_fname, ec);
+    if (!ec) return file.parent_path();
+  }
+  return {};
+}
+
+fs::path program_dir() {
+  std::error_code ec;
+  const fs::path exe = fs::canonical("/proc/self/exe", ec);
+  return ec ? fs::path() : exe.parent_path();
+}
+
+bool holds_assets(const fs::path& dir) {
+  std::error_code ec;
+  return !dir.empty() && fs::is_directory(dir / "hands", ec);
+}
+
+bool inside(const fs::path& dir, const fs::path& root) {
+  if (dir.empty()) return false;
+  const std::string d = (dir / "").string(), r = (fs::path(root) / "").string();
+  return d.compare(0, r.size(), r) == 0;
+}
+
+// share/cordgrasp of an installation holding the running program or module: each compiled-in
+// relative path (bin -> share, lib -> share, Python package -> share) from both folders.
+std::string installed_assets_dir() {
+  const std::string relative = CORDGRASP_ASSETS_RELATIVE_DIRS;  // "a:b:c"
+  for (const fs::path& base : {code_dir(), program_dir()}) {
+    if (base.empty()) continue;
+    size_t start = 0;
+    while (start <= relative.size()) {
+      const size_t end = std::min(relative.find(':', start), relative.size());
+      const fs::path candidate = (base / relative.substr(start, end - start)).lexically_normal();
+      if (end > start && holds_assets(candidate)) return candidate.string();
+      start = end + 1;
+    }
+  }
+  return {};
+}
+
 }  // namespace
 
 std::string assets_dir() {
   const char* env = std::getenv("CORDGRASP_ASSETS_DIR");
   if (env && *env) return env;
-  return CORDGRASP_ASSETS_DIR;
+  static const std::string found = [] {
+    const std::string source = CORDGRASP_SOURCE_ASSETS_DIR;
+    const std::string prefix = CORDGRASP_INSTALL_ASSETS_DIR;
+    const fs::path build_dir = CORDGRASP_BUILD_DIR;
+    const bool in_build = inside(code_dir(), build_dir) || inside(program_dir(), build_dir);
+    if (in_build && holds_assets(source)) return source;
+    const std::string installed = installed_assets_dir();
+    if (!installed.empty()) return installed;
+    if (holds_assets(prefix)) return prefix;
+    return holds_assets(source) ? source : prefix;
+  }();
+  return found;
 }
 
 std::string shipped_objects_dir() { return (fs::path(assets_dir()) / "objects").string(); }

@@ -5,8 +5,9 @@
 
 namespace cordgrasp {
 
-/// The assets folder: $CORDGRASP_ASSETS_DIR when set, else the source tree's assets/
-/// (compile definition CORDGRASP_ASSETS_DIR).
+/// The assets folder: $CORDGRASP_ASSETS_DIR when set; else, for programs and modules of the
+/// build tree, the source tree's assets/; else share/cordgrasp of the installation holding the
+/// running program or module (found relative to it), then of the configured install prefix.
 std::string assets_dir();
 
 /// <assets>/objects: the shipped objects as OBJ in meters (`cordgrasp generate-objects`).
