@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cordgrasp/core/grasp.h"
+#include "cordgrasp/core/hand_description.h"
 #include "cordgrasp/core/hand_model.h"
 #include "cordgrasp/core/mesh.h"
 #include "cordgrasp/jobs/plan_job.h"
@@ -34,6 +35,7 @@ struct BenchParams {
   std::string tests = "lift,shake";   ///< physics tests on each attempt's first grasp; "none"
   Protocol protocol = Protocol::kQuick;  ///< physics protocol preset
   std::string sim_cache_dir;          ///< on-disk convex decomposition cache ("" = memory only)
+  HandLoadOptions hand_load;          ///< package:// directories of the hands' URDFs
 };
 
 /// One attempt: plan (and validate the first grasp of) one object with one hand and planner.

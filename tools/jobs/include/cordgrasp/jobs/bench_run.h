@@ -19,6 +19,7 @@ struct BenchRunParams {
   std::string tests = "lift,shake";     ///< physics tests on each first grasp, or "none"
   Protocol protocol = Protocol::kQuick; ///< physics protocol preset
   std::string cache_dir;                ///< on-disk convex decomposition cache ("" = none)
+  HandLoadOptions hand_load;            ///< package:// directories of the hands' URDFs
   int jobs = 1;                         ///< threads
   std::string shard;                    ///< "k/N": one deterministic slice ("" = all)
   bool no_sheets = false;               ///< no contact sheet PNGs

@@ -8,6 +8,7 @@
 #include "cordgrasp/core/cord_params.h"
 #include "cordgrasp/core/explore_cords.h"
 #include "cordgrasp/core/grasp_region.h"
+#include "cordgrasp/core/hand_description.h"
 #include "cordgrasp/core/mesh_io.h"
 
 namespace cordgrasp {
@@ -17,6 +18,7 @@ struct ExploreJobParams {
   std::string object;                         ///< mesh file
   LengthUnits units = LengthUnits::kMeters;   ///< units of the mesh file
   std::string hand;          ///< palm width from this hand ("": the shipped default hand)
+  HandLoadOptions hand_load; ///< package:// directories of the hand's URDF
   double palm_width_m = 0.0; ///< > 0: this palm width instead of a hand's [m]
   CordParams cord;           ///< every exploration parameter
   int top = 20;              ///< regions the command prints (0 = all)
