@@ -1,0 +1,82 @@
+#include "cordgrasp/jobs/export_job.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "cordgrasp/core/atomic_file.h"
+#include "cordgrasp/core/error.h"
+#include "cordgrasp/core/hand_description.h"
+#include "cordgrasp/core/mesh_io.h"
+#include "cordgrasp/jobs/export_mesh.h"
+#include "cordgrasp/jobs/export_mjcf.h"
+#include "cordgrasp/jobs/export_moveit.h"
+#include "cordgrasp/jobs/plan_job.h"
+#include "cordgrasp/jobs/plan_json.h"
+#include "cordgrasp/sim/convex_decomposition.h"
+
+namespace cordgrasp {
+
+namespace fs = std::filesystem;
+
+const char* to_string(ExportFormat format) {
+  switch (format) {
+    case ExportFormat::kMjcf: return "mjcf";
+    case ExportFormat::kMoveit: return "moveit";
+    case ExportFormat::kGlb: return "glb";
+    case ExportFormat::kObj: return "obj";
+  }
+  return "?";
+}
+
+ExportFormat parse_export_format(const std::string& text) {
+  for (ExportFormat f :
+       {ExportFormat::kMjcf, ExportFormat::kMoveit, ExportFormat::kGlb, ExportFormat::kObj})
+    if (text == to_string(f)) return f;
+  throw std::invalid_argument("'" + text + "' is not mjcf, moveit, glb or obj");
+}
+
+ExportOutcome export_job(const ExportJobParams& p) {
+  const nlohmann::json json = read_plan_json(p.plan);
+  const HandModel hand = load_hand(plan_hand_path(json), p.hand_load);
+  const PlanDocument plan = plan_from_json(json, hand, p.plan);
+  std::vector<Grasp> grasps = plan.grasps;
+  if (p.grasps >= 0 && static_cast<size_t>(p.grasps) < grasps.size()) grasps.resize(p.grasps);
+
+  ExportOutcome out;
+  out.grasps = static_cast<int>(grasps.size());
+  const fs::path out_path(p.out);
+  if (p.format == ExportFormat::kMjcf || p.format == ExportFormat::kMoveit) {
+    std::error_code ec;
+    if (out_path.has_parent_path() && !fs::is_directory(out_path.parent_path(), ec))
+      throw InputError("export: --out '" + p.out + "': folder '" +
+                       out_path.parent_path().string() + "' does not exist");
+  }
+  if (p.format == ExportFormat::kMoveit) {
+    write_file_atomically(p.out, moveit_grasps_yaml(hand, grasps));
+    out.files.push_back(p.out);
+    return out;
+  }
+
+  MeshLoadOptions mesh_opt;
+  mesh_opt.units = parse_length_units(plan.object_units);
+  const Mesh object = load_mesh(plan.object_path, mesh_opt);
+  if (p.format == ExportFormat::kMjcf) {
+    const auto parts = cached_convex_decomposition(object, DecompositionParams{}, p.cache_dir);
+    out.files = write_mjcf_scene(p.out, hand, grasps, plan_contact_model(plan), parts->parts);
+    return out;
+  }
+
+  std::error_code ec;
+  fs::create_directories(out_path, ec);
+  if (ec) throw InputError("export: cannot create '" + p.out + "': " + ec.message());
+  const bool glb = p.format == ExportFormat::kGlb;
+  for (size_t k = 0; k < grasps.size(); ++k) {
+    const std::string file =
+        (out_path / ("grasp_" + std::to_string(k) + (glb ? ".glb" : ".obj"))).string();
+    write_grasp_mesh(file, glb ? "glb2" : "obj", hand, grasps[k], object);
+    out.files.push_back(file);
+  }
+  return out;
+}
+
+}  // namespace cordgrasp
