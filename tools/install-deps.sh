@@ -19,6 +19,7 @@ PKGS=(
   libembree-dev                           # ray queries on large meshes
   libgtest-dev libgmock-dev googletest
   libbenchmark-dev
+  libmujoco-dev                           # tests/export and mujoco_check: MuJoCo 2.2.2
 )
 
 missing=()

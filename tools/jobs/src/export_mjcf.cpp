@@ -1,5 +1,6 @@
 #include "cordgrasp/jobs/export_mjcf.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -15,6 +16,9 @@ namespace cordgrasp {
 namespace {
 
 namespace fs = std::filesystem;
+
+/// Width given to a joint range with lower == upper [rad or m].
+constexpr double kLockedRange = 1e-6;
 
 /// Numbers as MJCF text: 10 significant digits (0.1 µm at 1 km).
 std::string num(double v) {
@@ -124,9 +128,12 @@ class HandWriter {
                                                              : params_.squeeze_rad);
         out << indent << "  <joint name=\"" << escaped(joint.name) << "\" type=\""
             << (slide ? "slide" : "hinge") << "\" axis=\"" << vec(joint.axis) << "\"";
-        if (joint.type != JointType::kContinuous)
-          out << " limited=\"true\" range=\"" << num(joint.lower) << " " << num(joint.upper)
+        if (joint.type != JointType::kContinuous) {
+          // MuJoCo refuses an empty range: a joint locked by lower == upper gets kLockedRange.
+          const double upper = std::max(joint.upper, joint.lower + kLockedRange);
+          out << " limited=\"true\" range=\"" << num(joint.lower) << " " << num(upper)
               << "\"";
+        }
         out << " armature=\"" << num(armature) << "\" damping=\""
             << num(2.0 * std::sqrt(kp * armature)) << "\"/>\n";
         qpos_joints_.push_back(j);
@@ -264,7 +271,7 @@ std::vector<std::string> write_mjcf_scene(const std::string& path, const HandMod
     x << "  <keyframe>\n";
     for (size_t k = 0; k < grasps.size(); ++k) {
       const Grasp& g = grasps[k];
-      const Eigen::VectorXd q = apply_couplings(hand, g.q);
+      const Eigen::VectorXd& q = g.q;  // as planned (the couplings may be off by the closing)
       Eigen::VectorXd qpos(writer.qpos_joints().size() + 7);
       for (size_t i = 0; i < writer.qpos_joints().size(); ++i)
         qpos[i] = q[writer.qpos_joints()[i]];

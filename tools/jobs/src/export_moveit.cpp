@@ -64,8 +64,8 @@ std::string moveit_grasps_yaml(const HandModel& hand, const std::vector<Grasp>& 
   if (grasps.empty()) y << "[]\n";
   for (size_t k = 0; k < grasps.size(); ++k) {
     const Grasp& g = grasps[k];
-    const Eigen::VectorXd q = apply_couplings(hand, g.q);
-    const Eigen::VectorXd q_pre = apply_couplings(hand, g.q_preshape);
+    const Eigen::VectorXd& q = g.q;  // as planned
+    const Eigen::VectorXd& q_pre = g.q_preshape;
     // Approach: the GCP's +z (into the object) in the root link frame, at the grasp.
     const Eigen::Isometry3d X_BG = g.X_OB.inverse() * g.X_OG;
     const Eigen::Vector3d approach_B = X_BG.linear().col(2).normalized();
