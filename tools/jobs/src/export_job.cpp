@@ -1,12 +1,15 @@
 #include "cordgrasp/jobs/export_job.h"
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 #include "cordgrasp/core/atomic_file.h"
+#include "cordgrasp/core/convex_hull_volume.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_description.h"
 #include "cordgrasp/core/mesh_io.h"
+#include "cordgrasp/core/mesh_volume.h"
 #include "cordgrasp/jobs/export_mesh.h"
 #include "cordgrasp/jobs/export_mjcf.h"
 #include "cordgrasp/jobs/export_moveit.h"
@@ -62,7 +65,23 @@ ExportOutcome export_job(const ExportJobParams& p) {
   const Mesh object = load_mesh(plan.object_path, mesh_opt);
   if (p.format == ExportFormat::kMjcf) {
     const auto parts = cached_convex_decomposition(object, DecompositionParams{}, p.cache_dir);
-    out.files = write_mjcf_scene(p.out, hand, grasps, plan_contact_model(plan), parts->parts);
+    // Mass as in Bullet (docs/physics.md §2): density × closed volume (hull volume for open
+    // meshes); MuJoCo sums the parts' hulls, which overlap and fill cavities, so the geoms'
+    // density is scaled to give that mass.
+    MjcfParams mjcf;
+    const std::optional<SolidVolume> closed = closed_mesh_volume(object);
+    const double volume_m3 = closed ? closed->volume_m3 : convex_hull_volume(object).volume_m3;
+    double parts_m3 = 0.0;
+    for (const auto& part : parts->parts) {
+      Mesh hull;
+      hull.vertices = part;
+      // convex_hull_volume reads the vertices that triangles use: a fan over all of them.
+      for (int i = 2; i < static_cast<int>(part.size()); ++i) hull.triangles.emplace_back(0, 1, i);
+      parts_m3 += part.size() >= 4 ? convex_hull_volume(hull).volume_m3 : 0.0;
+    }
+    if (volume_m3 > 0.0 && parts_m3 > 0.0) mjcf.density_kgm3 *= volume_m3 / parts_m3;
+    out.files =
+        write_mjcf_scene(p.out, hand, grasps, plan_contact_model(plan), parts->parts, mjcf);
     return out;
   }
 

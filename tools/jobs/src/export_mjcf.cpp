@@ -96,8 +96,10 @@ class HandWriter {
 
   void write_root(std::ostream& out, const Eigen::Isometry3d& X_OB) {
     const Link& root = hand_.links[hand_.root_link];
-    out << "    <body name=\"" << escaped(root.name) << "\" mocap=\"true\"" << pose_attrs(X_OB)
-        << ">\n";
+    out << "    <body name=\"" << MjcfNames::kHandTarget << "\" mocap=\"true\""
+        << pose_attrs(X_OB) << "/>\n";
+    out << "    <body name=\"" << escaped(root.name) << "\"" << pose_attrs(X_OB) << ">\n";
+    out << "      <freejoint name=\"" << MjcfNames::kHandJoint << "\"/>\n";
     write_link_contents(out, hand_.root_link, "      ");
     out << "    </body>\n";
   }
@@ -250,7 +252,10 @@ std::vector<std::string> write_mjcf_scene(const std::string& path, const HandMod
       eq << "    <joint joint1=\"" << escaped(j.name) << "\" joint2=\""
          << escaped(hand.joints[j.mimic->master_joint].name) << "\" polycoef=\""
          << num(j.mimic->offset) << " " << num(j.mimic->multiplier) << " 0 0 0\"/>\n";
-  if (!eq.str().empty()) x << "  <equality>\n" << eq.str() << "  </equality>\n";
+  x << "  <equality>\n    <weld body1=\"" << MjcfNames::kHandTarget << "\" body2=\""
+    << escaped(hand.links[hand.root_link].name) << "\" solref=\"" << num(params.weld_time_s)
+    << " 1\"/>\n"
+    << eq.str() << "  </equality>\n";
 
   // Position servos on the joints a hand drives (not the mimic ones).
   std::vector<int> actuated;
@@ -272,9 +277,11 @@ std::vector<std::string> write_mjcf_scene(const std::string& path, const HandMod
     for (size_t k = 0; k < grasps.size(); ++k) {
       const Grasp& g = grasps[k];
       const Eigen::VectorXd& q = g.q;  // as planned (the couplings may be off by the closing)
-      Eigen::VectorXd qpos(writer.qpos_joints().size() + 7);
-      for (size_t i = 0; i < writer.qpos_joints().size(); ++i)
-        qpos[i] = q[writer.qpos_joints()[i]];
+      const size_t nj = writer.qpos_joints().size();
+      Eigen::VectorXd qpos(7 + nj + 7);
+      const Eigen::Quaterniond r(g.X_OB.linear());
+      qpos.head(7) << g.X_OB.translation(), r.w(), r.x(), r.y(), r.z();
+      for (size_t i = 0; i < nj; ++i) qpos[7 + i] = q[writer.qpos_joints()[i]];
       qpos.tail(7) << 0, 0, 0, 1, 0, 0, 0;
       Eigen::VectorXd ctrl(actuated.size());
       for (size_t i = 0; i < actuated.size(); ++i) ctrl[i] = q[actuated[i]];
