@@ -23,7 +23,7 @@ for hand in "$@"; do
       >/dev/null 2>&1 || continue
     "$CG" export --plan "$base.plan.json" --format mjcf --out "$base.xml" >/dev/null 2>&1 ||
       continue
-    "$MJ" --scene "$base.xml" --plan "$base.plan.json" --out "$base.mujoco.csv" >/dev/null ||
+    "$MJ" --scene "$base.xml" --out "$base.mujoco.csv" >/dev/null ||
       continue
   done
   /usr/bin/python3 - "$OUT/$hand" "$hand" <<'PY'

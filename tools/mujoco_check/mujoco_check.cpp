@@ -1,4 +1,5 @@
-// cordgrasp-mujoco-check: lift test in MuJoCo on a scene from `cordgrasp export --format mjcf`.
+// cordgrasp-mujoco-check: lift test in MuJoCo (MuJoCo and CLI11 only: with libqhullcpp linked,
+// as the cordgrasp libraries do, MuJoCo's own qhull calls abort on their first message) on a scene from `cordgrasp export --format mjcf`.
 // Per keyframe (grasp): gravity off, the position servos squeeze past the planned joint values
 // (the actor joints by squeeze_rad in their closing direction: a weaker Bullet squeeze spring,
 // docs/physics.md §3); then gravity along the approach (the GCP's +z) and the hand (mocap)
@@ -14,10 +15,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "cordgrasp/core/hand_description.h"
-#include "cordgrasp/jobs/plan_json.h"
 
-namespace cordgrasp {
 namespace {
 
 /// Settings of the MuJoCo lift test (durations as Bullet's quick protocol, docs/physics.md §3).
@@ -50,27 +48,22 @@ Eigen::Isometry3d body_pose(const mjData* d, int body) {
   return X;
 }
 
-LiftCheckResult check_grasp(const mjModel* m, mjData* d, int key, const HandModel& hand,
-                            const LiftCheckParams& p) {
+LiftCheckResult check_grasp(const mjModel* m, mjData* d, int key, const LiftCheckParams& p) {
   mjModel* mm = const_cast<mjModel*>(m);
   mj_resetDataKeyframe(m, d, key);
-  // Squeeze targets: actor joints past the plan in their closing direction.
+  // Squeeze targets: actor joints past the plan in their closing direction (the actuator's
+  // user value: +1, −1, or 0 for joints no actor drives).
   for (int a = 0; a < m->nu; ++a) {
     const int j = m->actuator_trnid[2 * a];
-    const char* name = mj_id2name(m, mjOBJ_JOINT, j);
-    const int hj = find_joint(hand, name ? name : "");
-    double sign = 0.0;
-    for (const Actor& actor : hand.actors)
-      for (const Actor::Entry& e : actor.joints)
-        if (e.joint == hj) sign = e.direction_speed > 0 ? 1.0 : -1.0;
+    const double sign = m->nuser_actuator > 0 ? m->actuator_user[a * m->nuser_actuator] : 0.0;
     const double squeeze = m->jnt_type[j] == mjJNT_SLIDE ? p.squeeze_m : p.squeeze_rad;
     d->ctrl[a] = m->key_ctrl[key * m->nu + a] + sign * squeeze;
   }
   const int object = mj_name2id(m, mjOBJ_BODY, "object");
-  const int root = mj_name2id(m, mjOBJ_BODY, hand.links[hand.root_link].name.c_str());
   const int target = mj_name2id(m, mjOBJ_BODY, "hand_target");
-  if (target < 0 || m->body_mocapid[target] < 0)
-    throw std::runtime_error("scene lacks the mocap body hand_target");
+  if (target < 0 || m->body_mocapid[target] < 0 || m->njnt < 1 || m->jnt_type[0] != mjJNT_FREE)
+    throw std::runtime_error("scene lacks the mocap body hand_target or the hand's free joint");
+  const int root = m->jnt_bodyid[0];  // the hand root's free joint is the scene's first joint
   const int mocap = m->body_mocapid[target];
   const int site = mj_name2id(m, mjOBJ_SITE, "gcp");
   if (object < 0 || root < 0 || site < 0)
@@ -112,18 +105,13 @@ LiftCheckResult check_grasp(const mjModel* m, mjData* d, int key, const HandMode
 }
 
 }  // namespace
-}  // namespace cordgrasp
 
 int main(int argc, char** argv) {
-  using namespace cordgrasp;
   CLI::App app{"cordgrasp-mujoco-check: lift test in MuJoCo on a scene written by `cordgrasp "
                "export --format mjcf` (a second opinion, not the validation)"};
-  std::string scene, plan, csv;
-  HandLoadOptions hand_load;
+  std::string scene, csv;
   LiftCheckParams p;
   app.add_option("--scene", scene, "MJCF scene from `cordgrasp export`")->required();
-  app.add_option("--plan", plan, "The plan.json it was exported from (actor directions)")
-      ->required();
   app.add_option("--out", csv, "CSV: grasp,held,shift_m,turn_rad");
   app.add_option("--lift-s", p.lift_s, "Duration of the rise [s]")->capture_default_str();
   app.add_option("--lift-m", p.lift_m, "Height of the rise [m]")->capture_default_str();
@@ -136,8 +124,6 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
-    const nlohmann::json json = read_plan_json(plan);
-    const HandModel hand = load_hand(plan_hand_path(json), hand_load);
     char error[1000] = "";
     std::unique_ptr<mjModel, void (*)(mjModel*)> m(
         mj_loadXML(scene.c_str(), nullptr, error, sizeof(error)), mj_deleteModel);
@@ -151,7 +137,7 @@ int main(int argc, char** argv) {
     }
     int held = 0;
     for (int k = 0; k < m->nkey; ++k) {
-      const LiftCheckResult r = check_grasp(m.get(), d.get(), k, hand, p);
+      const LiftCheckResult r = check_grasp(m.get(), d.get(), k, p);
       held += r.held;
       std::printf("grasp %d: %s (shift %.1f mm, turn %.1f deg)\n", k,
                   r.held ? "held" : "dropped", r.shift_m * 1e3, r.turn_rad * 180 / M_PI);

@@ -173,6 +173,14 @@ class HandWriter {
   std::vector<int> qpos_joints_;
 };
 
+/// +1 / −1: the direction an actor closes joint j in (its direction_speed's sign); 0: no actor.
+int closing_sign(const HandModel& hand, int j) {
+  for (const Actor& actor : hand.actors)
+    for (const Actor::Entry& e : actor.joints)
+      if (e.joint == j) return e.direction_speed > 0 ? 1 : -1;
+  return 0;
+}
+
 std::string joined(const Eigen::VectorXd& v) {
   std::string s;
   for (int i = 0; i < v.size(); ++i) s += (i ? " " : "") + num(v[i]);
@@ -227,6 +235,7 @@ std::vector<std::string> write_mjcf_scene(const std::string& path, const HandMod
   x << "  <compiler angle=\"radian\" meshdir=\"" << escaped(mesh_dir_name)
     << "\" inertiafromgeom=\"auto\" balanceinertia=\"true\" boundmass=\"1e-6\""
        " boundinertia=\"1e-12\"/>\n";
+  x << "  <size nuser_actuator=\"1\"/>\n";
   x << "  <option timestep=\"" << num(params.time_step_s)
     << "\" gravity=\"0 0 -9.81\" cone=\"elliptic\" impratio=\"10\"/>\n";
   x << "  <default>\n";
@@ -268,7 +277,7 @@ std::vector<std::string> write_mjcf_scene(const std::string& path, const HandMod
     const double kp = effort / (is_prismatic(joint) ? params.squeeze_m : params.squeeze_rad);
     x << "    <position name=\"" << escaped(joint.name) << "\" joint=\"" << escaped(joint.name)
       << "\" kp=\"" << num(kp) << "\" forcelimited=\"true\" forcerange=\"" << num(-effort) << " "
-      << num(effort) << "\"/>\n";
+      << num(effort) << "\" user=\"" << closing_sign(hand, j) << "\"/>\n";
   }
   x << "  </actuator>\n";
 
