@@ -21,6 +21,9 @@ namespace cordgrasp {
 
 namespace fs = std::filesystem;
 
+/// Convex parts at most this large are flat for MuJoCo [m³] (a 0.1 mm cube is 1e-12 m³).
+constexpr double kFlatPartVolume_m3 = 1e-12;
+
 const char* to_string(ExportFormat format) {
   switch (format) {
     case ExportFormat::kMjcf: return "mjcf";
@@ -71,17 +74,25 @@ ExportOutcome export_job(const ExportJobParams& p) {
     MjcfParams mjcf;
     const std::optional<SolidVolume> closed = closed_mesh_volume(object);
     const double volume_m3 = closed ? closed->volume_m3 : convex_hull_volume(object).volume_m3;
+    // Flat parts (a single face, a planar sheet) are dropped: MuJoCo's qhull refuses them.
+    std::vector<std::vector<Eigen::Vector3d>> solid_parts;
     double parts_m3 = 0.0;
     for (const auto& part : parts->parts) {
       Mesh hull;
       hull.vertices = part;
       // convex_hull_volume reads the vertices that triangles use: a fan over all of them.
       for (int i = 2; i < static_cast<int>(part.size()); ++i) hull.triangles.emplace_back(0, 1, i);
-      parts_m3 += part.size() >= 4 ? convex_hull_volume(hull).volume_m3 : 0.0;
+      const double v = part.size() >= 4 ? convex_hull_volume(hull).volume_m3 : 0.0;
+      if (v <= kFlatPartVolume_m3) continue;
+      solid_parts.push_back(part);
+      parts_m3 += v;
     }
+    if (solid_parts.empty())
+      throw InputError("export: '" + plan.object_path +
+                       "': the object is flat (no convex part with volume); MuJoCo needs one");
     if (volume_m3 > 0.0 && parts_m3 > 0.0) mjcf.density_kgm3 *= volume_m3 / parts_m3;
     out.files =
-        write_mjcf_scene(p.out, hand, grasps, plan_contact_model(plan), parts->parts, mjcf);
+        write_mjcf_scene(p.out, hand, grasps, plan_contact_model(plan), solid_parts, mjcf);
     return out;
   }
 
