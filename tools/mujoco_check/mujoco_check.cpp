@@ -1,5 +1,6 @@
-// cordgrasp-mujoco-check: lift test in MuJoCo (MuJoCo and CLI11 only: with libqhullcpp linked,
-// as the cordgrasp libraries do, MuJoCo's own qhull calls abort on their first message) on a scene from `cordgrasp export --format mjcf`.
+// cordgrasp-mujoco-check: lift test in MuJoCo on a scene from `cordgrasp export --format mjcf`.
+// MuJoCo and CLI11 only: with libqhullcpp linked, as the cordgrasp libraries do, MuJoCo's own
+// qhull calls abort on their first message.
 // Per keyframe (grasp): gravity off, the position servos squeeze past the planned joint values
 // (the actor joints by squeeze_rad in their closing direction: a weaker Bullet squeeze spring,
 // docs/physics.md §3); then gravity along the approach (the GCP's +z) and the hand (mocap)
@@ -115,7 +116,8 @@ int main(int argc, char** argv) {
   app.add_option("--out", csv, "CSV: grasp,held,shift_m,turn_rad");
   app.add_option("--lift-s", p.lift_s, "Duration of the rise [s]")->capture_default_str();
   app.add_option("--lift-m", p.lift_m, "Height of the rise [m]")->capture_default_str();
-  app.add_option("--gravity", p.gravity_mps2, "Gravity while lifting [m/s^2]")->capture_default_str();
+  app.add_option("--gravity", p.gravity_mps2, "Gravity while lifting [m/s^2]")
+      ->capture_default_str();
   app.add_option("--hold-s", p.hold_s, "Hold after the rise [s]")->capture_default_str();
   app.add_option("--close-s", p.close_s, "Squeeze before lifting [s]")->capture_default_str();
   app.add_option("--squeeze-rad", p.squeeze_rad,
@@ -141,7 +143,8 @@ int main(int argc, char** argv) {
       held += r.held;
       std::printf("grasp %d: %s (shift %.1f mm, turn %.1f deg)\n", k,
                   r.held ? "held" : "dropped", r.shift_m * 1e3, r.turn_rad * 180 / M_PI);
-      if (out) out << k << ',' << (r.held ? 1 : 0) << ',' << r.shift_m << ',' << r.turn_rad << '\n';
+      if (out)
+        out << k << ',' << (r.held ? 1 : 0) << ',' << r.shift_m << ',' << r.turn_rad << '\n';
     }
     std::printf("mujoco-check: %d/%d held\n", held, static_cast<int>(m->nkey));
   } catch (const std::exception& e) {

@@ -28,7 +28,9 @@ std::string num(double v) {
   return s.str();
 }
 
-std::string vec(const Eigen::Vector3d& v) { return num(v.x()) + " " + num(v.y()) + " " + num(v.z()); }
+std::string vec(const Eigen::Vector3d& v) {
+  return num(v.x()) + " " + num(v.y()) + " " + num(v.z());
+}
 
 /// MuJoCo's quaternion order: w x y z.
 std::string quat(const Eigen::Matrix3d& R) {
