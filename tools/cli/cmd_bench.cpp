@@ -72,6 +72,7 @@ void add_bench_command(CLI::App& app) {
       "bench", "Benchmark planners over objects × hands × repeats: results.csv, summary.md, "
                "contact sheets (docs/bench.md)");
   cmd->add_option("--hands", opt->bench.hands, "Hands (names or files), comma separated")->required();
+  add_package_path_option(cmd, opt->bench.hand_load);
   cmd->add_option("--objects", opt->bench.objects,
                   "Object mesh files and/or directories (their .obj/.stl/.ply/.off files)")
       ->required();

@@ -72,6 +72,7 @@ void add_explore_command(CLI::App& app) {
                       std::string("Hand (shipped name or description path) whose palm width is "
                                   "used; default: ") +
                           default_hand_name());
+  add_package_path_option(cmd, opt->hand_load);
   cmd->add_option("--palm-width-m", opt->palm_width_m, "Palm width W_palm instead of a hand [m]")
       ->check(number_in(1e-4, 10.0))
       ->excludes(hand);

@@ -12,6 +12,7 @@ namespace {
 struct InfoOptions {
   std::string object;
   std::string hand;
+  HandLoadOptions hand_load;
   std::string units = "m";
   double scale = 1.0;
   bool json = false;
@@ -26,6 +27,7 @@ void add_info_command(CLI::App& app) {
   cmd->add_option("--object,-o", opt->object, "Object mesh file (OBJ, STL, PLY, OFF, DAE, glTF)");
   cmd->add_option("--hand", opt->hand,
                   "Hand description (YAML) or the name of a shipped hand, e.g. cordgrasp_sah");
+  add_package_path_option(cmd, opt->hand_load);
   cmd->add_option("--units", opt->units, "Units of the object file: m, mm or auto")
       ->check(CLI::IsMember({"m", "mm", "auto"}))
       ->capture_default_str();
@@ -35,7 +37,7 @@ void add_info_command(CLI::App& app) {
     if (opt->object.empty() == opt->hand.empty())
       throw CLI::ValidationError("info", "give exactly one of --object FILE or --hand HAND");
     if (!opt->hand.empty()) {
-      const nlohmann::json j = hand_info_json(opt->hand);
+      const nlohmann::json j = hand_info_json(opt->hand, opt->hand_load);
       if (opt->json)
         std::cout << j.dump(2) << '\n';
       else

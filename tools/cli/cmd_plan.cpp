@@ -20,6 +20,7 @@ namespace {
 
 struct PlanOptions {
   std::string hand = default_hand_name();
+  HandLoadOptions hand_load;
   std::string object;
   PlanJobParams job;
   std::string out;
@@ -79,7 +80,7 @@ void print_summary(const PlanDocument& doc, const HandModel& hand, const std::st
 void run_plan(const PlanOptions& opt) {
   const std::string object_path = resolve_object_path(opt.object);
   const Mesh mesh = load_job_mesh(opt.job, object_path);
-  const HandModel hand = load_hand(opt.hand);
+  const HandModel hand = load_hand(opt.hand, opt.hand_load);
   PlanDocument doc;
   if (opt.validate) {
     SimParams sim;
@@ -105,6 +106,7 @@ void add_plan_command(CLI::App& app) {
       "plan", "Plan force-closure grasps with the cord planner (or the generic baseline)");
   cmd->add_option("--hand", opt->hand, "Hand description file or shipped hand name")
       ->capture_default_str();
+  add_package_path_option(cmd, opt->hand_load);
   cmd->add_option("--object,-o", opt->object, "Object mesh file or shipped object name")->required();
   add_plan_job_options(cmd, opt->job);
   cmd->add_flag("--validate", opt->validate,

@@ -17,6 +17,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_option(
       "--hand", opt->hand,
       "Hand description (YAML) or shipped hand name: the hand alone, root at the origin");
+  add_package_path_option(cmd, opt->hand_load);
   cmd->add_option("--close", opt->close,
                   "With --hand: close every actor joint this fraction of the way to its limit")
       ->check(CLI::Range(0.0, 1.0));

@@ -31,6 +31,7 @@ void add_run_command(CLI::App& app) {
              "write plan.json, sim.json, PNGs and report.md");
   cmd->add_option("--hand", opt->run.hand, "Hand description file or shipped hand name")
       ->capture_default_str();
+  add_package_path_option(cmd, opt->run.hand_load);
   cmd->add_option("--object,-o", opt->run.object, "Object mesh file or shipped object name")
       ->capture_default_str();
   add_plan_job_options(cmd, opt->run.job);

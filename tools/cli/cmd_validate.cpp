@@ -25,6 +25,7 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--plan", opt->job.plan, "plan.json written by `cordgrasp plan`")->required();
   cmd->add_option("--hand", opt->job.hand,
                   "Hand (default: the plan's); a plan for another hand is an error");
+  add_package_path_option(cmd, opt->job.hand_load);
   cmd->add_option("--object,-o", opt->job.object,
                   "Object mesh (default: the plan's); another object is an error");
   cmd->add_option("--units", opt->job.units, "Units of --object: m, mm or auto (default: the plan's)")

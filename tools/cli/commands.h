@@ -15,5 +15,6 @@ void add_bench_command(CLI::App& app);           ///< cmd_bench.cpp
 void add_generate_objects_command(CLI::App& app);  ///< cmd_generate_objects.cpp
 void add_merge_command(CLI::App& app);           ///< cmd_merge.cpp
 void add_hand_command(CLI::App& app);            ///< cmd_hand.cpp
+void add_export_command(CLI::App& app);          ///< cmd_export.cpp
 
 }  // namespace cordgrasp::cli

@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   cli::add_generate_objects_command(app);
   cli::add_merge_command(app);
   cli::add_hand_command(app);
+  cli::add_export_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

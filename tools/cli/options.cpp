@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 
 namespace cordgrasp::cli {
@@ -110,6 +111,33 @@ void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
   cmd->add_flag_callback(
       "--no-local-improvement", [&p]() { p.cord.local_improvement = false; },
       "Cord: skip the local improvement of the sampled sets");
+}
+
+void add_package_path_option(CLI::App* cmd, HandLoadOptions& o) {
+  cmd->add_option_function<std::vector<std::string>>(
+         "--package-path",
+         [&o](const std::vector<std::string>& items) {
+           for (const std::string& item : items) {
+             const size_t eq = item.find('=');
+             // Relative to the working directory, not to the URDF.
+             o.package_paths[item.substr(0, eq)] =
+                 std::filesystem::absolute(item.substr(eq + 1)).lexically_normal().string();
+           }
+         },
+         "ROS package directory for package://NAME/... meshes, NAME=DIR (repeatable; "
+         "before ROS_PACKAGE_PATH and AMENT_PREFIX_PATH)")
+      ->type_name("NAME=DIR")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            const size_t eq = text.find('=');
+            if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+              return text + " is not NAME=DIR";
+            std::error_code ec;
+            if (!std::filesystem::is_directory(text.substr(eq + 1), ec))
+              return text + ": '" + text.substr(eq + 1) + "' is not a directory";
+            return std::string();
+          },
+          "NAME=DIR"));
 }
 
 void add_picture_options(CLI::App& cmd, PictureOptions& o) {

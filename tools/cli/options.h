@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "cordgrasp/core/hand_description.h"
 #include "cordgrasp/jobs/parse_name.h"
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/render_options.h"
@@ -47,6 +48,12 @@ CLI::Option* add_scale_option(CLI::App* cmd, double* scale, const std::string& e
 /// --soft-finger-radius, --side-cords, --quality, --units, --scale, --sets, --no-local-improvement) to
 /// `cmd`, bound to `p`.
 void add_plan_job_options(CLI::App* cmd, PlanJobParams& p);
+
+/// Adds --package-path NAME=DIR (repeatable) to `cmd`: the directory of ROS package NAME for
+/// package://NAME/... mesh URIs, into o.package_paths (searched before ROS_PACKAGE_PATH and
+/// AMENT_PREFIX_PATH; docs/hand-description.md). DIR must be an existing directory; a relative
+/// DIR is taken from the working directory.
+void add_package_path_option(CLI::App* cmd, HandLoadOptions& o);
 
 /// Adds --view, --approach, --size, --supersample, --ground, --caption, --no-caption, --ortho.
 void add_picture_options(CLI::App& cmd, PictureOptions& o);

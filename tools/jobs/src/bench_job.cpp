@@ -469,7 +469,8 @@ BenchInputs::BenchInputs(const BenchParams& params, const std::vector<BenchAttem
     }
     if (!loaded->hands.count(a.hand) && !loaded->errors.count("hand:" + a.hand)) {
       try {
-        loaded->hands[a.hand] = std::make_shared<const HandModel>(load_hand(a.hand));
+        loaded->hands[a.hand] =
+            std::make_shared<const HandModel>(load_hand(a.hand, params.hand_load));
       } catch (const std::exception& e) {
         loaded->errors["hand:" + a.hand] = e.what();
       }

@@ -120,6 +120,7 @@ BenchRunOutcome run_bench(const BenchRunParams& opt, const BenchRunCallbacks& cb
   params.protocol = opt.protocol;
   params.sim_cache_dir = opt.cache_dir;
   if (opt.validate) params.validation = opt.validation;
+  params.hand_load = opt.hand_load;
   if (params.tests != "none") (void)sim_tests_from_string(params.tests);  // fail early
   const auto [shard_k, shard_n] = opt.shard.empty() ? std::pair{1, 1} : parse_shard(opt.shard);
 

@@ -23,7 +23,7 @@ ExploreOutcome explore_job(const ExploreJobParams& opt) {
   double palm_width_m = opt.palm_width_m;
   if (palm_width_m <= 0.0) {
     const std::string hand_name = opt.hand.empty() ? default_hand_name() : opt.hand;
-    const HandModel hand = load_hand(hand_name);
+    const HandModel hand = load_hand(hand_name, opt.hand_load);
     palm_width_m = palm_width(hand);
     hand_text = "hand " + hand_name;
   }

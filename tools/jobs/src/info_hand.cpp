@@ -61,8 +61,9 @@ nlohmann::json geometry_json(const std::vector<Geometry>& geometry) {
 
 }  // namespace
 
-nlohmann::json hand_info_json(const std::string& name_or_path) {
-  const HandModel hand = load_hand(name_or_path);
+nlohmann::json hand_info_json(const std::string& name_or_path,
+                              const HandLoadOptions& options) {
+  const HandModel hand = load_hand(name_or_path, options);
   const Eigen::VectorXd q = apply_couplings(hand, hand.preshape);
   const auto X_WL = link_poses(hand, q);
 

@@ -148,7 +148,7 @@ std::string run_render_objects(const RenderJobParams& opt, const Warn& /*warn*/)
 
 // A hand alone at a configuration: preshape, partly closed (--close) and/or --joint values.
 std::string run_render_hand(const RenderJobParams& opt, const Warn& /*warn*/) {
-  const HandModel hand = load_hand(opt.hand);
+  const HandModel hand = load_hand(opt.hand, opt.hand_load);
   Eigen::VectorXd q = closing_configuration(hand, opt.close);
   for (const std::string& text : opt.joints) {
     const size_t eq = text.find('=');
@@ -228,7 +228,7 @@ const GraspRegion* region_of(const Grasp& g, const std::vector<GraspRegion>& reg
 // or with --sheet N the first N grasps as a contact sheet.
 std::string run_render_plan(const RenderJobParams& opt, const Warn& warn) {
   const nlohmann::json json = read_plan_json(opt.plan);
-  const HandModel hand = load_hand(plan_hand_path(json));
+  const HandModel hand = load_hand(plan_hand_path(json), opt.hand_load);
   const PlanDocument plan = [&] {
     try {
       return plan_from_json(json, hand, "plan");

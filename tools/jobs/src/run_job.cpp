@@ -52,7 +52,7 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
 
   const std::string object_path = resolve_object_path(opt.object);
   const auto mesh = std::make_shared<const Mesh>(load_job_mesh(opt.job, object_path));
-  const HandModel hand = load_hand(opt.hand);
+  const HandModel hand = load_hand(opt.hand, opt.hand_load);
 
   // 1. Plan (validated: only grasps that hold in physics).
   const bool validated = physics && opt.validate;

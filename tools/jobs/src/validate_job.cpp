@@ -35,7 +35,7 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   const nlohmann::json plan_json = read_plan_json(opt.plan);
   // Hand: the plan's, or the one given (which must be the plan's).
   const std::string hand_path = opt.hand.empty() ? plan_hand_path(plan_json) : opt.hand;
-  const HandModel hand = load_hand(hand_path);
+  const HandModel hand = load_hand(hand_path, opt.hand_load);
   const PlanDocument plan = plan_from_json(plan_json, hand, opt.plan);  // throws for another hand
 
   // Object: the plan's, or the one given (which must be the plan's geometry).

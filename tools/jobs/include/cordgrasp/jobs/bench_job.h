@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cordgrasp/core/grasp.h"
+#include "cordgrasp/core/hand_description.h"
 #include "cordgrasp/core/hand_model.h"
 #include "cordgrasp/core/mesh.h"
 #include "cordgrasp/jobs/grasp_validation.h"
@@ -38,6 +39,7 @@ struct BenchParams {
   /// Set: each attempt plans with plan_validated_grasps (its tests and protocol: from above)
   /// and fills the validated_* columns.
   std::optional<ValidationParams> validation;
+  HandLoadOptions hand_load;          ///< package:// directories of the hands' URDFs
 };
 
 /// One attempt: plan (and validate the first grasp of) one object with one hand and planner.

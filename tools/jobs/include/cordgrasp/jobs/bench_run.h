@@ -19,6 +19,7 @@ struct BenchRunParams {
   std::string tests = "lift,shake";     ///< physics tests on each first grasp, or "none"
   Protocol protocol = Protocol::kQuick; ///< physics protocol preset
   std::string cache_dir;                ///< on-disk convex decomposition cache ("" = none)
+  HandLoadOptions hand_load;            ///< package:// directories of the hands' URDFs
   int jobs = 1;                         ///< threads
   bool validate = false;                ///< validated planning per attempt (validated_* columns)
   ValidationParams validation;          ///< its settings (tests, protocol: from above)

@@ -8,6 +8,7 @@
 #include "cordgrasp/core/cord_params.h"
 #include "cordgrasp/core/explore_cords.h"
 #include "cordgrasp/core/grasp_region.h"
+#include "cordgrasp/core/hand_description.h"
 #include "cordgrasp/core/mesh_io.h"
 
 namespace cordgrasp {
@@ -18,6 +19,7 @@ struct ExploreJobParams {
   LengthUnits units = LengthUnits::kMeters;   ///< units of the mesh file
   double scale = 1.0;                         ///< uniform scale after the units
   std::string hand;          ///< palm width from this hand ("": the shipped default hand)
+  HandLoadOptions hand_load; ///< package:// directories of the hand's URDF
   double palm_width_m = 0.0; ///< > 0: this palm width instead of a hand's [m]
   CordParams cord;           ///< every exploration parameter
   int top = 20;              ///< regions the command prints (0 = all)

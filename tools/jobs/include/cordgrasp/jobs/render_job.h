@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "cordgrasp/core/hand_description.h"
 #include "cordgrasp/jobs/render_options.h"
 
 namespace cordgrasp {
@@ -13,6 +14,7 @@ struct RenderJobParams {
   PictureOptions picture;
   std::vector<std::string> objects;
   std::string hand;
+  HandLoadOptions hand_load;  ///< package:// directories of the hand's URDF
   double close = 0.0;
   std::vector<std::string> joints;  // NAME=VALUE
   bool collision = false;

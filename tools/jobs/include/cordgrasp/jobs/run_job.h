@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cordgrasp/jobs/grasp_validation.h"
+#include "cordgrasp/core/hand_description.h"
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/render_options.h"
 #include "cordgrasp/jobs/run_report.h"
@@ -16,6 +17,7 @@ namespace cordgrasp {
 /// Inputs and settings of run_job().
 struct RunParams {
   std::string hand;            ///< hand description file or shipped hand name
+  HandLoadOptions hand_load;   ///< package:// directories of the hand's URDF
   std::string object;          ///< object mesh file or shipped object name
   PlanJobParams job;           ///< planner settings (grasps = 3 on the command line)
   std::string tests = "lift,shake";  ///< physics tests (lift, shake, gravity6) or "none"

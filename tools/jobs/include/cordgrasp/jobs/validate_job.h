@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cordgrasp/core/grasp_perturbation.h"
+#include "cordgrasp/core/hand_description.h"
 #include "cordgrasp/jobs/validate_plan.h"
 #include "cordgrasp/sim/sim_params.h"
 
@@ -17,6 +18,7 @@ namespace cordgrasp {
 struct ValidateJobParams {
   std::string plan;
   std::string hand;
+  HandLoadOptions hand_load;  ///< package:// directories of the hand's URDF
   std::string object;
   std::string units;
   std::optional<double> scale;  ///< object scale (default: the plan's)

@@ -1,0 +1,59 @@
+// --package-path NAME=DIR: a URDF with package:// meshes loads with it; without it the error
+// names the package.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "test_paths.h"
+
+namespace cordgrasp {
+namespace {
+
+const std::string kPackage = "cordgrasp_test_meshes";
+
+std::string hand() { return test::test_data("hands/package_uri/package_uri.yaml"); }
+std::string package_dir() { return test::test_data("hands/package_uri/ros/" + kPackage); }
+
+TEST(PackagePathCli, LoadsAPackageUriHandWithThePackagePath) {
+  const test::CommandResult r = test::run_cordgrasp(
+      "info --hand " + hand() + " --package-path " + kPackage + "=" + package_dir());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("package_uri"), std::string::npos) << r.output;
+}
+
+TEST(PackagePathCli, WithoutThePackagePathTheErrorNamesThePackage) {
+  const test::CommandResult r =
+      test::run_cordgrasp("info --hand " + hand());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("ROS package '" + kPackage + "' not found"), std::string::npos)
+      << r.output;
+}
+
+TEST(PackagePathCli, AnotherPackageDoesNotHelp) {
+  const test::CommandResult r = test::run_cordgrasp("info --hand " + hand() +
+                                                    " --package-path other=" + package_dir());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("'" + kPackage + "'"), std::string::npos) << r.output;
+}
+
+TEST(PackagePathCli, RefusesAMissingDirectoryAndAMalformedItem) {
+  const test::CommandResult missing = test::run_cordgrasp(
+      "info --hand " + hand() + " --package-path " + kPackage + "=/no/such/dir");
+  EXPECT_NE(missing.exit_code, 0);
+  EXPECT_NE(missing.output.find("is not a directory"), std::string::npos) << missing.output;
+  const test::CommandResult malformed =
+      test::run_cordgrasp("info --hand " + hand() + " --package-path " + kPackage);
+  EXPECT_NE(malformed.exit_code, 0);
+  EXPECT_NE(malformed.output.find("is not NAME=DIR"), std::string::npos) << malformed.output;
+}
+
+TEST(PackagePathCli, EveryCommandLoadingAHandTakesIt) {
+  for (const std::string cmd :
+       {"plan", "validate", "run", "render", "explore", "info", "bench", "export"}) {
+    const test::CommandResult r = test::run_cordgrasp(cmd + " --help");
+    EXPECT_NE(r.output.find("--package-path"), std::string::npos) << cmd;
+  }
+}
+
+}  // namespace
+}  // namespace cordgrasp
