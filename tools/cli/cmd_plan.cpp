@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "options.h"
 #include "cordgrasp/core/assets.h"
+#include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/jobs/plan_job.h"
@@ -21,6 +22,7 @@ struct PlanOptions {
   std::string object;
   PlanJobParams job;
   std::string out;
+  bool quiet = false;
 };
 
 std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
@@ -68,7 +70,9 @@ void run_plan(const PlanOptions& opt) {
   const HandModel hand = load_hand(opt.hand);
   const PlanDocument doc = plan_job(opt.job, mesh, object_path, hand);
   write_plan_file(opt.out, doc, hand);
-  print_summary(doc, hand, opt.out);
+  if (!opt.quiet) print_summary(doc, hand, opt.out);
+  if (doc.grasps.empty())
+    throw NoGraspFound(no_grasp_message("plan", doc, mesh) + ". Wrote " + opt.out);
 }
 
 }  // namespace
@@ -83,6 +87,7 @@ void add_plan_command(CLI::App& app) {
   cmd->add_option("--object,-o", opt->object, "Object mesh file or shipped object name")->required();
   add_plan_job_options(cmd, opt->job);
   cmd->add_option("--out", opt->out, "Output plan.json")->required();
+  cmd->add_flag("--quiet,-q", opt->quiet, "No summary on stdout (warnings and errors only)");
   cmd->callback([opt]() { run_plan(*opt); });
 }
 

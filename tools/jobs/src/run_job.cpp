@@ -74,12 +74,8 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   const std::string report_path = (fs::path(opt.out_dir) / "report.md").string();
   if (n == 0) {
     write_file_atomically(report_path, run_report_markdown(report));
-    throw std::runtime_error(
-        "run: no force-closure grasp of " + mesh->name + " with " + hand.name + " (" +
-        opt.job.planner + " planner, " + std::to_string(plan.stats.attempts) +
-        " attempts in " + fixed(plan.stats.total_s, 1) +
-        " s); try a longer --time-limit, another --seed or --planner. Wrote " + plan_path +
-        " and " + report_path);
+    throw NoGraspFound(no_grasp_message("run", plan, *mesh) + ". Wrote " + plan_path + " and " +
+                       report_path);
   }
 
   // 2. Physics, keeping the world at the ends of close, lift and shake for the pictures.
