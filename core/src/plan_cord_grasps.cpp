@@ -55,10 +55,12 @@ PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand
       stats.timed_out = true;
       break;
     }
+    if (stats.attempts >= params.max_attempts) break;
     const GraspRegion& region = regions[order[rank]];
     ++stats.regions_processed;
     const double travel = approach_travel_m(mesh, region);
     for (int roll = 0; roll < (params.roll_retry ? 2 : 1); ++roll) {
+      if (stats.attempts >= params.max_attempts) break;
       const Eigen::Isometry3d X_OG = gcp_pose_for_region(region, ctx.setup.R_GH, roll == 1);
       Grasp grasp;
       if (!internal::attempt_grasp(hand, collider, ctx, params, X_OG, travel, stats, grasp))
@@ -73,9 +75,10 @@ PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand
       break;
     }
   }
-  if (static_cast<int>(result.grasps.size()) < wanted &&
-      exploration_s + seconds_since(start) > params.time_limit_s)
-    stats.timed_out = true;
+  if (static_cast<int>(result.grasps.size()) < wanted) {
+    if (exploration_s + seconds_since(start) > params.time_limit_s) stats.timed_out = true;
+    if (stats.attempts >= params.max_attempts) stats.attempt_budget_reached = true;
+  }
   stats.total_s = exploration_s + seconds_since(start);
   return result;
 }
@@ -107,10 +110,15 @@ PlanResult plan_cord_grasps(const Mesh& mesh, const HandModel& hand, HandObjectC
   if (explore.time_limit_s <= 0.0 || explore.time_limit_s > params.time_limit_s)
     explore.time_limit_s = params.time_limit_s;
   const double w_palm = palm_width(hand);
-  const std::vector<GraspRegion> regions = explore_cords(mesh, w_palm, explore, exploration);
+  ExplorationStats explored;
+  const std::vector<GraspRegion> regions = explore_cords(mesh, w_palm, explore, &explored);
+  if (exploration) *exploration = explored;
   const std::vector<int> order = cord_region_order(regions, w_palm, explore);
-  return plan_cord_grasps_from_regions(mesh, hand, collider, regions, params,
-                                       internal::seconds_since(start), &order);
+  PlanResult result = plan_cord_grasps_from_regions(mesh, hand, collider, regions, params,
+                                                    internal::seconds_since(start), &order);
+  if (explored.hit_time_limit && static_cast<int>(result.grasps.size()) < params.grasps)
+    result.stats.timed_out = true;  // fewer regions than a faster machine would have found
+  return result;
 }
 
 }  // namespace cordgrasp

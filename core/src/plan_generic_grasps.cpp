@@ -46,7 +46,10 @@ PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
 
   const int wanted = std::max(1, params.grasps);
   while (static_cast<int>(result.grasps.size()) < wanted) {
-    if (stats.attempts >= params.max_attempts) break;
+    if (stats.attempts >= params.max_attempts) {
+      stats.attempt_budget_reached = true;
+      break;
+    }
     if (seconds_since(start) > params.time_limit_s) {
       stats.timed_out = true;
       break;

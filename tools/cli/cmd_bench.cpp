@@ -80,7 +80,7 @@ void add_bench_command(CLI::App& app) {
       ->default_val("cord");
   cmd->add_option("--repeats", opt->bench.repeats,
                   "Attempts per object, hand and planner; repeat r uses seed --seed + r")
-      ->check(CLI::PositiveNumber)
+      ->check(whole_number_in(1, 100000))
       ->capture_default_str();
   add_plan_job_options(cmd, opt->bench.job);
   cmd->remove_option(cmd->get_option("--planner"));  // --planners instead
@@ -93,7 +93,7 @@ void add_bench_command(CLI::App& app) {
   cmd->add_option("--cache-dir", opt->bench.cache_dir,
                   "Directory caching convex decompositions on disk (by mesh hash)");
   cmd->add_option("--jobs,-j", opt->bench.jobs, "Attempts run in parallel threads")
-      ->check(CLI::PositiveNumber)
+      ->check(whole_number_in(1, 256))
       ->capture_default_str();
   cmd->add_option("--shard", opt->bench.shard,
                   "k/N: run only attempts whose index mod N = k-1 (join with cordgrasp merge)");

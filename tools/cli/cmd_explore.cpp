@@ -8,6 +8,7 @@
 
 #include "commands.h"
 #include "options.h"
+#include "cordgrasp/core/assets.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/jobs/explore_job.h"
 
@@ -65,7 +66,7 @@ void add_explore_command(CLI::App& app) {
   auto opt = std::make_shared<ExploreJobParams>();
   CLI::App* cmd = app.add_subcommand(
       "explore", "Cord exploration: ranked grasp regions (front-cord sets by ascending chi)");
-  cmd->add_option("--object,-o", opt->object, "Object mesh file (OBJ, STL, PLY, OFF, DAE, glTF)")
+  cmd->add_option("--object,-o", opt->object, "Object mesh file (OBJ, STL, PLY, OFF, DAE, glTF) or shipped object name")
       ->required();
   CLI::Option* hand =
       cmd->add_option("--hand", opt->hand,
@@ -78,7 +79,7 @@ void add_explore_command(CLI::App& app) {
       ->excludes(hand);
   CordParams* cord = &opt->cord;
   cmd->add_option("--sets", cord->sets, "Valid sets to sample before local improvement (K)")
-      ->check(CLI::Range(1, 100000))
+      ->check(whole_number_in(1, 100000))
       ->capture_default_str();
   cmd->add_option("--seed", cord->seed, "Seed of the random generator")
       ->check(seed_value())
@@ -104,6 +105,7 @@ void add_explore_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--json", opt->json_path, "Also write all regions and stats to this JSON file");
   cmd->callback([opt]() {
+    opt->object = resolve_object_path(opt->object);
     const ExploreOutcome out = explore_job(*opt);
     print_regions(out, *opt);
     if (!opt->json_path.empty()) std::cout << "wrote    " << opt->json_path << '\n';

@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "options.h"
 #include "cordgrasp/core/assets.h"
+#include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/jobs/plan_job.h"
@@ -28,6 +29,7 @@ struct PlanOptions {
   ValidationParams validation;
   std::optional<double> mass_kg, density_kgm3;
   int jobs = 1;
+  bool quiet = false;
 };
 
 std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
@@ -94,7 +96,9 @@ void run_plan(const PlanOptions& opt) {
     doc = plan_job(opt.job, mesh, object_path, hand);
   }
   write_plan_file(opt.out, doc, hand);
-  print_summary(doc, hand, opt.out);
+  if (!opt.quiet) print_summary(doc, hand, opt.out);
+  if (doc.grasps.empty())
+    throw NoGraspFound(no_grasp_message("plan", doc, mesh) + ". Wrote " + opt.out);
 }
 
 }  // namespace
@@ -124,6 +128,7 @@ void add_plan_command(CLI::App& app) {
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
   cmd->add_option("--out", opt->out, "Output plan.json")->required();
+  cmd->add_flag("--quiet,-q", opt->quiet, "No summary on stdout (warnings and errors only)");
   cmd->callback([opt]() { run_plan(*opt); });
 }
 

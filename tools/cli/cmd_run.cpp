@@ -42,7 +42,7 @@ void add_run_command(CLI::App& app) {
                   "Physics protocol: quick, or thorough (long phases, no early exits)");
   cmd->add_option("--jobs,-j", opt->run.jobs,
                   "Grasps simulated at once, one physics world per thread (same results)")
-      ->check(CLI::Range(1, 256))
+      ->check(whole_number_in(1, 256))
       ->capture_default_str();
   cmd->add_flag("--no-validate", opt->no_validate,
                 "Plan force-closure grasps only and validate them afterwards (default: keep "

@@ -6,6 +6,7 @@
 
 #include "commands.h"
 #include "options.h"
+#include "cordgrasp/core/assets.h"
 #include "cordgrasp/jobs/text_format.h"
 #include "cordgrasp/jobs/validate_job.h"
 #include "cordgrasp/sim/sim_params.h"
@@ -27,7 +28,8 @@ void add_validate_command(CLI::App& app) {
                   "Hand (default: the plan's); a plan for another hand is an error");
   add_package_path_option(cmd, opt->job.hand_load);
   cmd->add_option("--object,-o", opt->job.object,
-                  "Object mesh (default: the plan's); another object is an error");
+                  "Object mesh file or shipped object name (default: the plan's); another "
+                  "object is an error");
   cmd->add_option("--units", opt->job.units, "Units of --object: m, mm or auto (default: the plan's)")
       ->check(CLI::IsMember({"m", "mm", "auto"}));
   cmd->add_option_function<double>(
@@ -92,14 +94,14 @@ void add_validate_command(CLI::App& app) {
                   "Most vertices of each object hull (the single hull or a decomposition part; "
                   "default " +
                       std::to_string(defaults.decomposition.max_hull_vertices) + ")")
-      ->check(CLI::Range(4, 100000));
+      ->check(whole_number_in(4, 100000));
   cmd->add_flag("--warmstart", opt->job.warmstart,
                 "Warm-start the hand's contact impulses from the previous step (Bullet's "
                 "articulated warmstarting)");
   cmd->add_option("--jobs,-j", opt->job.jobs,
                   "Grasps (and trials) simulated at once, one physics world per thread; the "
                   "results do not depend on it (--snapshots runs one at a time)")
-      ->check(CLI::Range(1, 256))
+      ->check(whole_number_in(1, 256))
       ->capture_default_str();
   cmd->add_option("--grasps", opt->job.grasps, "Validate only the first K grasps of the plan")
       ->check(whole_number_in(1, 100000));
@@ -107,7 +109,7 @@ void add_validate_command(CLI::App& app) {
                   "Simulate each grasp N times: as planned, then with the hand moved by "
                   "--trial-offset and turned by --trial-turn (held / not-held of marginal "
                   "grasps is chaotic; docs/physics.md)")
-      ->check(CLI::Range(1, 1000))
+      ->check(whole_number_in(1, 1000))
       ->capture_default_str();
   cmd->add_option("--trial-offset", opt->job.perturbation.offset_m,
                   "Hand offset of the repeated trials [m], random direction")
@@ -133,6 +135,7 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--out", opt->job.out, "Output sim.json")->required();
   cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
   cmd->callback([opt]() {
+    if (!opt->job.object.empty()) opt->job.object = resolve_object_path(opt->job.object);
     ValidateJobCallbacks cb;
     cb.grasp_line = [](const std::string& line) { std::cout << line << '\n' << std::flush; };
     if (!opt->quiet)

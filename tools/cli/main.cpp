@@ -4,6 +4,7 @@
 #include <string>
 
 #include "commands.h"
+#include "cordgrasp/core/error.h"
 #include "cordgrasp/core/version.h"
 #include "cordgrasp/render/backend_info.h"
 #include "cordgrasp/sim/backend_info.h"
@@ -34,9 +35,12 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const NoGraspFound& e) {
+    std::cerr << "cordgrasp: " << e.what() << '\n';
+    return kExitNoGrasp;
   } catch (const std::exception& e) {
     std::cerr << "cordgrasp: error: " << e.what() << '\n';
-    return 1;
+    return kExitError;
   }
   return 0;
 }

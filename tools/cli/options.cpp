@@ -52,6 +52,17 @@ CLI::Validator whole_number_in(long long lo, long long hi) {
       rule);
 }
 
+CLI::Validator whole_number_at_least(long long lo) {
+  const std::string rule = "a whole number \u2265 " + std::to_string(lo);
+  return CLI::Validator(
+      [lo, rule](std::string& text) {
+        if (!all_digits(text, true) || text.size() > 18) return text + " is not " + rule;
+        if (std::stoll(text) < lo) return text + " is not " + rule;
+        return std::string();
+      },
+      rule);
+}
+
 CLI::Validator seed_value() {
   const std::string rule = "a whole number in [0, 18446744073709551615]";
   return CLI::Validator(
@@ -82,7 +93,14 @@ void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
   cmd->add_option("--grasps,-n", p.plan.grasps, "Stop after this many force-closure grasps")
       ->check(whole_number_in(1, 10000))
       ->capture_default_str();
-  cmd->add_option("--time-limit", p.plan.time_limit_s, "Wall-clock limit of the plan [s]")
+  cmd->add_option("--max-attempts", p.plan.max_attempts,
+                  "Stop after this many finger-stage attempts: the stopping rule, the same on "
+                  "every machine")
+      ->check(whole_number_in(1, 100000000))
+      ->capture_default_str();
+  cmd->add_option("--time-limit", p.plan.time_limit_s,
+                  "Safety net: wall-clock limit of the plan [s]; when it fires, the result "
+                  "depends on the machine's speed (timed_out in plan.json and results.csv)")
       ->check(number_in(1e-3, 1e6))
       ->capture_default_str();
   cmd->add_option("--seed", p.plan.seed, "Seed of every random choice")
@@ -149,7 +167,7 @@ void add_picture_options(CLI::App& cmd, PictureOptions& o) {
                  "Viewing direction x,y,z for --view approach (default: the grasp's approach)");
   cmd.add_option("--size", o.size, "Image size WxH in pixels")->capture_default_str();
   cmd.add_option("--supersample", o.supersample, "Anti-aliasing: supersampling factor 1..4")
-      ->check(CLI::Range(1, 4))
+      ->check(whole_number_in(1, 4))
       ->capture_default_str();
   cmd.add_option("--ground", o.ground, "Under the scene: shadow, grid or none")
       ->check(CLI::IsMember({"shadow", "grid", "none"}))

@@ -38,14 +38,18 @@ CLI::Validator number_in(double lo, double hi);
 /// Accepts whole numbers in [lo, hi], written as digits (no "1e3", no "2.5").
 CLI::Validator whole_number_in(long long lo, long long hi);
 
+/// Accepts whole numbers ≥ lo written as digits; refusals read "-1 is not a whole number ≥ 0".
+CLI::Validator whole_number_at_least(long long lo);
+
 /// Accepts a seed: a whole number in [0, 2^64 − 1] written as digits (no sign, no exponent).
 CLI::Validator seed_value();
 
 /// Adds --scale (a uniform object scale after --units, in (0, 1000]) bound to `*scale`.
 CLI::Option* add_scale_option(CLI::App* cmd, double* scale, const std::string& extra_help = "");
 
-/// Adds the planner options (--planner, --grasps, --time-limit, --seed, --mu,
-/// --soft-finger-radius, --side-cords, --quality, --units, --scale, --sets, --no-local-improvement) to
+/// Adds the planner options (--planner, --grasps, --max-attempts, --time-limit, --seed, --mu,
+/// --soft-finger-radius, --side-cords, --quality, --units, --scale, --sets,
+/// --no-local-improvement) to
 /// `cmd`, bound to `p`.
 void add_plan_job_options(CLI::App* cmd, PlanJobParams& p);
 

@@ -637,6 +637,11 @@ std::string bench_summary_markdown(const std::vector<BenchRow>& rows,
   if (!info.shard.empty()) out << " (shard " << info.shard << ")";
   out << "\n- physics tests on each attempt's first grasp: "
       << (info.tests.empty() ? "none" : info.tests) << "\n";
+  const auto timed_out = std::count_if(rows.begin(), rows.end(),
+                                       [](const BenchRow& r) { return r.timed_out; });
+  out << "- machine-dependent attempts (the --time-limit safety net fired before the attempt "
+         "budget; timed_out = 1 in results.csv): "
+      << timed_out << "\n";
   out << "- times are wall-clock seconds; α (skewness, docs/algorithm.md §9; of the palm "
          "normal, α approach of the GCP z axis) and ε of the "
          "first force-closure grasp; first FC, α and ε over the attempts that found a grasp; sim held = first "

@@ -1,7 +1,9 @@
 #include "cordgrasp/jobs/plan_job.h"
 
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include "cordgrasp/core/explore_cords.h"
 #include "cordgrasp/core/mesh_io.h"
@@ -31,6 +33,34 @@ Mesh load_job_mesh(const PlanJobParams& p, const std::string& object_path) {
     std::cerr << "cordgrasp: warning: '" << object_path << "' is " << diagonal_m
               << " m across: if the file is in millimetres, give --units mm (or auto)\n";
   return mesh;
+}
+
+namespace {
+
+constexpr double kHugeObjectDiagonal_m = 5.0;  ///< larger: probably a millimetre file read as m
+
+std::string fixed1(double v) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1) << v;
+  return s.str();
+}
+
+}  // namespace
+
+std::string no_grasp_message(const std::string& who, const PlanDocument& doc, const Mesh& mesh) {
+  const PlanStats& s = doc.stats;
+  std::string why = s.timed_out                ? "the --time-limit safety net fired"
+                    : s.attempt_budget_reached ? "--max-attempts budget used up"
+                                               : "every grasp region tried";
+  std::string text = who + ": no force-closure grasp of " + doc.object_name + " with " +
+                     doc.hand_name + " (" + doc.planner + " planner, " +
+                     std::to_string(s.attempts) + " attempts in " + fixed1(s.total_s) + " s, " +
+                     why + "); try another --seed, --planner or a larger --max-attempts";
+  const double diagonal_m = mesh_bounds(mesh).size().norm();
+  if (diagonal_m > kHugeObjectDiagonal_m)
+    text += "; the object is " + fixed1(diagonal_m) +
+            " m across: if the file is in millimetres, give --units mm (or auto)";
+  return text;
 }
 
 ContactModel plan_contact_model(const PlanDocument& plan) { return plan.params.quality.contact; }

@@ -135,7 +135,9 @@ nlohmann::json stats_json(const PlanStats& s) {
           {"quality_s", s.quality_s},
           {"total_s", s.total_s},
           {"first_force_closure_s", optional_json(s.first_force_closure_s)},
-          {"timed_out", s.timed_out}};
+          {"timed_out", s.timed_out},
+          {"attempt_budget_reached", s.attempt_budget_reached},
+          {"machine_dependent", s.timed_out}};
 }
 
 PlanStats stats_from_json(const nlohmann::json& j) {
@@ -156,6 +158,7 @@ PlanStats stats_from_json(const nlohmann::json& j) {
   if (j.contains("first_force_closure_s") && !j["first_force_closure_s"].is_null())
     s.first_force_closure_s = j["first_force_closure_s"].get<double>();
   s.timed_out = j.value("timed_out", false);
+  s.attempt_budget_reached = j.value("attempt_budget_reached", false);
   return s;
 }
 

@@ -91,7 +91,7 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   const std::string report_path = (fs::path(opt.out_dir) / "report.md").string();
   if (n == 0 && plan.validation && plan.validation->stats.force_closure > 0) {
     write_file_atomically(report_path, run_report_markdown(report));
-    throw std::runtime_error("run: no grasp of " + mesh->name + " with " + hand.name +
+    throw NoGraspFound("run: no grasp of " + mesh->name + " with " + hand.name +
                              " held in physics (" +
                              validation_stats_line(plan.validation->stats, plan.params.grasps) +
                              "); try a larger --budget, another --seed or --planner. Wrote " +
@@ -99,12 +99,8 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   }
   if (n == 0) {
     write_file_atomically(report_path, run_report_markdown(report));
-    throw std::runtime_error(
-        "run: no force-closure grasp of " + mesh->name + " with " + hand.name + " (" +
-        opt.job.planner + " planner, " + std::to_string(plan.stats.attempts) +
-        " attempts in " + fixed(plan.stats.total_s, 1) +
-        " s); try a longer --time-limit, another --seed or --planner. Wrote " + plan_path +
-        " and " + report_path);
+    throw NoGraspFound(no_grasp_message("run", plan, *mesh) + ". Wrote " + plan_path + " and " +
+                       report_path);
   }
 
   // 2. Physics, keeping the world at the ends of close, lift and shake for the pictures.

@@ -39,8 +39,8 @@ std::string run_report_markdown(const RunReport& rep) {
      << plan.object_units << ", scale " << format_number(plan.object_scale) << ")\n";
   md << "- Hand: " << plan.hand_name << " (`" << plan.hand_path << "`)\n";
   md << "- Planner: " << plan.planner << ", up to "
-     << plan.params.grasps << " grasps, time limit " << num(plan.params.time_limit_s)
-     << " s, seed " << plan.params.seed << ", μ " << num(plan.params.quality.contact.mu)
+     << plan.params.grasps << " grasps, at most " << plan.params.max_attempts
+     << " attempts, time limit " << num(plan.params.time_limit_s) << " s, seed " << plan.params.seed << ", μ " << num(plan.params.quality.contact.mu)
      << ", soft-finger radius " << num(plan.params.quality.contact.soft_finger_radius_m)
      << " m, quality " << to_string(plan.params.quality.mode) << "\n";
   if (rep.sim)
@@ -60,6 +60,10 @@ std::string run_report_markdown(const RunReport& rep) {
        << num(v.min_hand_turn_deg, "%.0f") << "°, budget " << num(v.budget_s) << " s\n";
   }
   md << "\n## Result\n\n";
+  if (s.timed_out)
+    md << "**Machine-dependent result:** the " << num(plan.params.time_limit_s)
+       << " s time limit stopped the planner before its attempt budget, so the same seed may "
+          "give other grasps on a faster or slower machine.\n\n";
   const int n = static_cast<int>(plan.grasps.size());
   if (plan.validation)
     md << "Validated planning: " << validation_stats_line(plan.validation->stats, plan.params.grasps)

@@ -11,4 +11,16 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A plan ran correctly but found no force-closure grasp (the tools exit with kExitNoGrasp).
+class NoGraspFound : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Exit codes of the tools: 1 = error (one line on stderr), 2 = `bench --strict` with error
+/// rows, 3 = no force-closure grasp found, 130 = interrupted (SIGINT), 105–120 = CLI11 refusals.
+constexpr int kExitError = 1;
+constexpr int kExitNoGrasp = 3;
+constexpr int kExitInterrupted = 130;
+
 }  // namespace cordgrasp

@@ -12,12 +12,16 @@ namespace cordgrasp {
 /// Parameters shared by the cord and the generic planner.
 struct PlanParams {
   int grasps = 1;              ///< stop after this many force-closure grasps
-  double time_limit_s = 10.0;  ///< wall-clock cap of the whole plan, exploration included [s]
+  /// Safety net: wall-clock cap of the whole plan, exploration included [s]. When it fires the
+  /// result depends on the machine's speed (PlanStats::timed_out).
+  double time_limit_s = 60.0;
   std::uint64_t seed = 1;      ///< generic planner sampling (the cord planner's is CordParams')
   FingerParams finger;         ///< finger stage (docs/algorithm.md §7)
   QualityParams quality;       ///< force closure and ε (docs/algorithm.md §8)
   bool roll_retry = true;      ///< cord: retry a failed region rolled 180° about z
-  int max_attempts = 1000000;  ///< generic: cap on attempts besides the time limit
+  /// The stopping rule: at most this many finger-stage attempts (both planners), so a seed
+  /// gives the same plan on any machine. The cord planner also stops when its regions run out.
+  int max_attempts = 500;
 
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
@@ -44,7 +48,10 @@ struct PlanStats {
   double quality_s = 0.0;      ///< all wrench-space evaluations
   double total_s = 0.0;        ///< the whole plan
   std::optional<double> first_force_closure_s;  ///< plan start → first FC grasp
-  bool timed_out = false;  ///< stopped by time_limit_s before finding `grasps` grasps
+  /// Stopped by time_limit_s (exploration or finger stage) before finding `grasps` grasps:
+  /// the result depends on the machine's speed.
+  bool timed_out = false;
+  bool attempt_budget_reached = false;  ///< stopped by max_attempts before finding `grasps`
 };
 
 /// Planned grasps (force-closure ones, in the order found) and statistics.

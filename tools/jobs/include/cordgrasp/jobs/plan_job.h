@@ -59,6 +59,11 @@ PlanDocument plan_document_for(const PlanJobParams& p, const Mesh& mesh,
 PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::string& object_path,
                       const HandModel& hand);
 
+/// One line on a plan that found no force-closure grasp: "<who>: no force-closure grasp of
+/// <object> with <hand> (<planner> planner, N attempts in T s, <why it stopped>); try ...",
+/// with a --units hint when the object is over 5 m across.
+std::string no_grasp_message(const std::string& who, const PlanDocument& doc, const Mesh& mesh);
+
 /// Absolute, normalized path.
 std::string absolute_path(const std::string& path);
 

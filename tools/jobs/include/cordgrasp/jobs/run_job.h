@@ -47,7 +47,7 @@ using RunProgress = std::function<void(const std::string&)>;
 
 /// Runs the whole job and writes plan.json, sim.json, report.md and PNGs to p.out_dir.
 /// Physics sees the plan as written to plan.json, so `cordgrasp validate --plan` reproduces
-/// its outcomes. @throws InputError for bad inputs (before any work), std::runtime_error when
+/// its outcomes. @throws InputError for bad inputs (before any work), NoGraspFound when
 /// no force-closure grasp was found, or with p.validate none held (plan.json and report.md are
 /// written first).
 RunOutcome run_job(const RunParams& p, const RunProgress& progress = {});
