@@ -150,14 +150,15 @@ void bind_io(py::module_& m) {
 
   m.def(
       "load_mesh",
-      [](const std::string& name_or_path, const std::string& units) {
+      [](const std::string& name_or_path, const std::string& units, double scale) {
         const std::string path = resolve_object_path(name_or_path);
         MeshLoadOptions options;
         options.units = parse_length_units(units);
+        options.scale = scale;
         py::gil_scoped_release release;
         return PyMesh{std::make_shared<const Mesh>(load_mesh(path, options)), path};
       },
-      py::arg("name_or_path"), py::arg("units") = "m",
+      py::arg("name_or_path"), py::arg("units") = "m", py::arg("scale") = 1.0,
       "Loads a mesh file (OBJ, STL, PLY, ...) or a shipped object by name ('mug').");
 
   py::class_<PyHand>(m, "Hand", "A hand: URDF kinematics and its grasping description.")
