@@ -173,6 +173,37 @@ TEST(BenchCsv, ParseRejectsAnotherHeaderAndShortRows) {
   EXPECT_THROW(parse_bench_csv(text, "x"), InputError);
 }
 
+TEST(BenchCsv, AFileWithoutTheNewerColumnsReadsWithTheirDefaults) {
+  // results.csv from before alpha_approach_rad, object_scale and validated_* (28 columns).
+  BenchRow row;
+  row.attempt = 2;
+  row.object = "mug";
+  row.status = "ok";
+  row.alpha_rad = 0.25;
+  row.alpha_approach_rad = 0.5;
+  row.object_scale = 2.0;
+  row.validated_accepted = 3;
+  const std::vector<std::string> names = bench_csv_columns(), cells = bench_row_cells(row);
+  std::string header, line;
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (names[i] == "alpha_approach_rad" || names[i] == "object_scale" ||
+        names[i].rfind("validated_", 0) == 0)
+      continue;
+    header += (header.empty() ? "" : ",") + names[i];
+    line += (line.empty() ? "" : ",") + cells[i];
+  }
+  const auto rows = parse_bench_csv(header + "\n" + line + "\n", "old.csv");
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].attempt, 2);
+  EXPECT_EQ(rows[0].alpha_rad, 0.25);
+  EXPECT_FALSE(rows[0].alpha_approach_rad.has_value());
+  EXPECT_EQ(rows[0].object_scale, 1.0);
+  EXPECT_FALSE(rows[0].validated_accepted.has_value());
+  // A required column missing, or an unknown one, is refused.
+  EXPECT_THROW(parse_bench_csv(header.substr(header.find(',') + 1) + "\n", "x"), InputError);
+  EXPECT_THROW(parse_bench_csv(header + ",extra\n", "x"), InputError);
+}
+
 TEST(BenchMerge, SortsByAttemptAndRejectsDuplicates) {
   BenchRow a, b, c;
   a.attempt = 0;
