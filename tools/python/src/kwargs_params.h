@@ -119,7 +119,7 @@ std::map<std::string, FlatField> flat_fields(T* params) {
 
 /// Sets the fields of `*params` named by `kwargs`. @throws py::type_error for unknown names.
 template <typename T>
-void set_from_kwargs(T* params, const py::kwargs& kwargs) {
+void set_from_kwargs(T* params, const py::dict& kwargs) {
   auto fields = flat_fields(params);
   for (const auto& item : kwargs) {
     const std::string name = py::cast<std::string>(item.first);

@@ -23,6 +23,7 @@
 #include "cordgrasp/jobs/hand_scene.h"
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/plan_json.h"
+#include "cordgrasp/jobs/plan_validated_grasps.h"
 #include "cordgrasp/jobs/render_options.h"
 #include "cordgrasp/jobs/sim_json.h"
 #include "cordgrasp/jobs/validate_plan.h"
@@ -246,6 +247,11 @@ void bind_plan(py::module_& m) {
       .def_property_readonly("parameters", [](const PyPlan& p) {
         return json_to_py(plan_to_json(p.doc, *p.hand)["parameters"]);
       })
+      .def_property_readonly("validation", [](const PyPlan& p) -> py::object {
+        const nlohmann::json j = plan_to_json(p.doc, *p.hand);
+        if (!j.contains("validation")) return py::none();
+        return json_to_py(j["validation"]);
+      }, "Validated planning: its parameters and stats (None for a plain plan).")
       .def("to_json", [](const PyPlan& p) { return plan_to_json(p.doc, *p.hand).dump(2); },
            "plan.json text.")
       .def("to_dict", [](const PyPlan& p) { return json_to_py(plan_to_json(p.doc, *p.hand)); })
@@ -282,6 +288,34 @@ void bind_plan(py::module_& m) {
       py::arg("mesh"), py::arg("hand"),
       "Plans force-closure grasps. Keyword arguments: planner ('cord' or 'generic') and every "
       "field of plan_parameters() (flat names, C++ defaults).");
+
+  m.def("validation_parameters", &defaults_dict<ValidationParams>,
+        "Every key of plan_validated()'s `validation` dict with its C++ default.");
+
+  m.def(
+      "plan_validated",
+      [](const PyMesh& mesh, const PyHand& hand, const py::dict& validation, int jobs,
+         const py::kwargs& kwargs) {
+        PlanJobParams params;
+        set_from_kwargs(&params, kwargs);
+        ValidationParams v;
+        set_from_kwargs(&v, validation);
+        PyPlan plan;
+        plan.hand = hand.hand;
+        plan.mesh = mesh.mesh;
+        const std::string path = mesh.path.empty() ? mesh.mesh->name : mesh.path;
+        py::gil_scoped_release release;
+        const auto start = std::chrono::steady_clock::now();
+        plan.doc = plan_validated_grasps(params, v, SimParams{}, *mesh.mesh, path, *hand.hand,
+                                         jobs);
+        plan.job_wall_s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return plan;
+      },
+      py::arg("mesh"), py::arg("hand"), py::arg("validation") = py::dict(), py::arg("jobs") = 1,
+      "Validated planning (as `cordgrasp plan --validate`): only grasps that hold in physics in "
+      "at least min_held of trials, pairwise different. `validation`: keys of "
+      "validation_parameters(); other keyword arguments as plan().");
 }
 
 // ---- physics -----------------------------------------------------------------------------

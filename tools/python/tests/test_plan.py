@@ -125,3 +125,16 @@ def test_assets_dir_is_the_source_tree_and_the_environment_overrides(monkeypatch
     assert cordgrasp.assets_dir() == str(tmp_path)
     with pytest.raises(cordgrasp.InputError, match="no shipped hand"):
         cordgrasp.load_hand("cordgrasp_sah")
+
+
+def test_plan_validated_keeps_only_grasps_that_held(mug, hand):
+    assert cordgrasp.validation_parameters()["min_held"] == 2
+    plan = cordgrasp.plan_validated(mug, hand, validation={"trials": 2, "min_held": 1},
+                                    grasps=1, seed=1)
+    assert plan.validation is not None
+    stats = plan.validation["stats"]
+    assert len(plan.grasps) == stats["accepted"] <= 1
+    for g in plan.to_dict()["grasps"]:
+        assert g["validation"]["held_trials"] >= 1
+    with pytest.raises(TypeError):
+        cordgrasp.plan_validated(mug, hand, validation={"no_such_key": 1})
