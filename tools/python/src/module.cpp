@@ -205,6 +205,21 @@ void bind_io(py::module_& m) {
 
 // ---- planning ----------------------------------------------------------------------------
 
+/// Runs one planning job with the GIL released and times it (PyPlan::job_wall_s).
+template <typename Job>
+PyPlan run_plan(const PyMesh& mesh, const PyHand& hand, const Job& job) {
+  PyPlan plan;
+  plan.hand = hand.hand;
+  plan.mesh = mesh.mesh;
+  const std::string path = mesh.path.empty() ? mesh.mesh->name : mesh.path;
+  py::gil_scoped_release release;
+  const auto start = std::chrono::steady_clock::now();
+  plan.doc = job(path);
+  plan.job_wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return plan;
+}
+
 void bind_plan(py::module_& m) {
   py::class_<PyContact>(m, "Contact", "A finger-object contact in the object frame.")
       .def_readonly("link", &PyContact::link)
@@ -274,16 +289,9 @@ void bind_plan(py::module_& m) {
       [](const PyMesh& mesh, const PyHand& hand, const py::kwargs& kwargs) {
         PlanJobParams params;
         set_from_kwargs(&params, kwargs);
-        PyPlan plan;
-        plan.hand = hand.hand;
-        plan.mesh = mesh.mesh;
-        const std::string path = mesh.path.empty() ? mesh.mesh->name : mesh.path;
-        py::gil_scoped_release release;
-        const auto start = std::chrono::steady_clock::now();
-        plan.doc = plan_job(params, *mesh.mesh, path, *hand.hand);
-        plan.job_wall_s =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        return plan;
+        return run_plan(mesh, hand, [&](const std::string& path) {
+          return plan_job(params, *mesh.mesh, path, *hand.hand);
+        });
       },
       py::arg("mesh"), py::arg("hand"),
       "Plans force-closure grasps. Keyword arguments: planner ('cord' or 'generic') and every "
@@ -300,17 +308,10 @@ void bind_plan(py::module_& m) {
         set_from_kwargs(&params, kwargs);
         ValidationParams v;
         set_from_kwargs(&v, validation);
-        PyPlan plan;
-        plan.hand = hand.hand;
-        plan.mesh = mesh.mesh;
-        const std::string path = mesh.path.empty() ? mesh.mesh->name : mesh.path;
-        py::gil_scoped_release release;
-        const auto start = std::chrono::steady_clock::now();
-        plan.doc = plan_validated_grasps(params, v, SimParams{}, *mesh.mesh, path, *hand.hand,
-                                         jobs);
-        plan.job_wall_s =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        return plan;
+        return run_plan(mesh, hand, [&](const std::string& path) {
+          return plan_validated_grasps(params, v, SimParams{}, *mesh.mesh, path, *hand.hand,
+                                       jobs);
+        });
       },
       py::arg("mesh"), py::arg("hand"), py::arg("validation") = py::dict(), py::arg("jobs") = 1,
       "Validated planning (as `cordgrasp plan --validate`): only grasps that hold in physics in "
