@@ -29,6 +29,22 @@ TEST(PackagePathCli, WithoutThePackagePathTheErrorNamesThePackage) {
       << r.output;
 }
 
+TEST(PackagePathCli, HandInitResolvesPackageUrisThroughIt) {
+  const std::string urdf = test::test_data("hands/package_uri/package_uri.urdf");
+  const std::string out = ::testing::TempDir() + "/package_uri_draft.yaml";
+  const test::CommandResult without =
+      test::run_cordgrasp("hand init --urdf " + urdf + " --out " + out);
+  EXPECT_NE(without.exit_code, 0);
+  EXPECT_NE(without.output.find("ROS package '" + kPackage + "' not found"), std::string::npos)
+      << without.output;
+  // With it the meshes load; this one-link fixture then has no finger to draft.
+  const test::CommandResult with = test::run_cordgrasp(
+      "hand init --urdf " + urdf + " --out " + out + " --package-path " + kPackage + "=" +
+      package_dir());
+  EXPECT_EQ(with.output.find("not found"), std::string::npos) << with.output;
+  EXPECT_NE(with.output.find("no joint closes any finger"), std::string::npos) << with.output;
+}
+
 TEST(PackagePathCli, AnotherPackageDoesNotHelp) {
   const test::CommandResult r = test::run_cordgrasp("info --hand " + hand() +
                                                     " --package-path other=" + package_dir());
@@ -49,7 +65,7 @@ TEST(PackagePathCli, RefusesAMissingDirectoryAndAMalformedItem) {
 
 TEST(PackagePathCli, EveryCommandLoadingAHandTakesIt) {
   for (const std::string cmd :
-       {"plan", "validate", "run", "render", "explore", "info", "bench", "export"}) {
+       {"plan", "validate", "run", "render", "explore", "info", "bench", "export", "hand init"}) {
     const test::CommandResult r = test::run_cordgrasp(cmd + " --help");
     EXPECT_NE(r.output.find("--package-path"), std::string::npos) << cmd;
   }

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "commands.h"
+#include "options.h"
 #include "cordgrasp/core/atomic_file.h"
 #include "cordgrasp/core/draft_hand_description.h"
 
@@ -14,10 +15,11 @@ namespace {
 struct HandInitOptions {
   std::string urdf;
   std::string out;
+  HandLoadOptions hand_load;  ///< --package-path
 };
 
 void run_hand_init(const HandInitOptions& opt) {
-  const HandDraft draft = draft_hand_description(opt.urdf, opt.out, HandLoadOptions{});
+  const HandDraft draft = draft_hand_description(opt.urdf, opt.out, opt.hand_load);
   write_file_atomically(opt.out, draft.yaml);
   std::printf("hand init: %s -> %s\n", opt.urdf.c_str(), opt.out.c_str());
   for (const DraftGuess& g : draft.guesses)
@@ -41,6 +43,7 @@ void add_hand_command(CLI::App& app) {
       "init", "Draft a hand description (YAML) from a URDF; prints each guess and how sure");
   init->add_option("--urdf", opt->urdf, "The hand's URDF")->required()->check(CLI::ExistingFile);
   init->add_option("--out", opt->out, "Hand description to write (YAML)")->required();
+  add_package_path_option(init, opt->hand_load);
   init->callback([opt]() { run_hand_init(*opt); });
 }
 
