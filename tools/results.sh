@@ -42,7 +42,7 @@ bench() {  # bench NAME ARGS...: one cordgrasp bench into OUT/NAME, command logg
   local name="$1"; shift
   echo "cordgrasp bench $* --jobs $JOBS --out-dir \$OUT/$name" >> "$OUT/commands.txt"
   echo "== $name" >&2
-  "$CG" bench "$@" --jobs "$JOBS" --out-dir "$OUT/$name"
+  "$CG" bench "$@" --jobs "$JOBS" --overwrite --out-dir "$OUT/$name"
 }
 start=$(date +%s)
 

@@ -142,6 +142,12 @@ TEST(CliRun, UnknownObjectNameIsOneLineErrorListingTheShippedOnes) {
             std::string::npos)
       << r.output;
   EXPECT_TRUE(fs::is_empty(dir.path));
+  // A bad input creates no output folder either.
+  const fs::path out = dir.path / "not-created";
+  const auto bad_hand =
+      run_cordgrasp("run --hand no_such_hand --out-dir " + quoted(out.string()));
+  EXPECT_NE(bad_hand.exit_code, 0);
+  EXPECT_FALSE(fs::exists(out)) << bad_hand.output;
 }
 
 TEST(CliRun, MillimetreFileReadAsMetersIsWarnedAboutAndAutoReadsItAsMillimetres) {

@@ -331,8 +331,15 @@ TEST(CliBench, BadMeshIsAnErrorRowAndTheBenchExitsZero) {
   EXPECT_NE(read_file(out + "/summary.md").find("## Errors"), std::string::npos);
   EXPECT_GT(fs::file_size(out + "/sheets/box.png"), 0u);
   EXPECT_FALSE(fs::exists(out + "/sheets/broken.png"));
+  // A second bench into the same folder is refused without --overwrite; nothing is replaced.
+  const std::string before = read_file(out + "/results.csv");
+  r = test::run_cordgrasp("bench" + args + " --tests none --no-sheets");
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("holds another bench's results.csv"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--overwrite"), std::string::npos) << r.output;
+  EXPECT_EQ(read_file(out + "/results.csv"), before);
   // --strict turns error rows into exit code 2 (rows are still written).
-  r = test::run_cordgrasp("bench" + args + " --tests none --no-sheets --strict");
+  r = test::run_cordgrasp("bench" + args + " --tests none --no-sheets --strict --overwrite");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_EQ(read_rows(out).size(), 2u);
   fs::remove_all(dir);

@@ -106,6 +106,8 @@ void add_bench_command(CLI::App& app) {
   cmd->add_flag("--strict", opt->strict, "Exit 2 when any attempt is an error row");
   cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
   cmd->add_option("--out-dir", opt->bench.out_dir, "Output directory (created)")->required();
+  cmd->add_flag("--overwrite", opt->bench.overwrite,
+                "Replace another bench's results.csv, bench.json and summary.md in --out-dir");
   cmd->callback([opt]() {
     BenchRunCallbacks cb;
     auto bar = std::make_shared<ProgressBar>(!opt->quiet);

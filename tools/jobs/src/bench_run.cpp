@@ -127,6 +127,11 @@ BenchRunOutcome run_bench(const BenchRunParams& opt, const BenchRunCallbacks& cb
   const std::vector<BenchAttempt> all = bench_attempts(params);
   const std::vector<BenchAttempt> attempts = shard_attempts(all, shard_k, shard_n);
   std::error_code ec;
+  if (!opt.overwrite)
+    for (const char* name : {"results.csv", "bench.json", "summary.md"})
+      if (fs::exists(fs::path(opt.out_dir) / name, ec))
+        throw InputError("bench: --out-dir '" + opt.out_dir + "' holds another bench's " + name +
+                         "; give another folder, or --overwrite to replace it");
   fs::create_directories(opt.out_dir, ec);
   if (ec) throw InputError("bench: cannot create '" + opt.out_dir + "': " + ec.message());
   if (cb.note)

@@ -48,11 +48,11 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   parse_image_size(picture.size);
   if (fs::exists(opt.out_dir) && !fs::is_directory(opt.out_dir))
     throw InputError("run: --out-dir '" + opt.out_dir + "' exists and is not a directory");
-  fs::create_directories(opt.out_dir);
 
   const std::string object_path = resolve_object_path(opt.object);
   const auto mesh = std::make_shared<const Mesh>(load_job_mesh(opt.job, object_path));
   const HandModel hand = load_hand(opt.hand, opt.hand_load);
+  fs::create_directories(opt.out_dir);  // only once the inputs have loaded
 
   // 1. Plan (validated: only grasps that hold in physics).
   const bool validated = physics && opt.validate;

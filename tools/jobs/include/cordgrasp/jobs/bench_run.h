@@ -27,6 +27,7 @@ struct BenchRunParams {
   bool no_sheets = false;               ///< no contact sheet PNGs
   std::string sheet_size = "480x360";   ///< contact sheet tile size WxH [px]
   std::string out_dir;                  ///< output folder (created)
+  bool overwrite = false;  ///< replace another bench's results in out_dir (else refused)
 };
 
 /// What run_bench() wrote.
