@@ -27,7 +27,8 @@ PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand
                                          HandObjectCollider& collider,
                                          const std::vector<GraspRegion>& regions,
                                          const PlanParams& params, double exploration_s,
-                                         const std::vector<int>* order_in) {
+                                         const std::vector<int>* order_in,
+                                         const CancelToken& cancel) {
   using internal::seconds_since;
   const auto start = std::chrono::steady_clock::now();
   PlanResult result;
@@ -56,6 +57,10 @@ PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand
       break;
     }
     if (stats.attempts >= params.max_attempts) break;
+    if (cancel.cancelled()) {
+      stats.interrupted = true;
+      break;
+    }
     const GraspRegion& region = regions[order[rank]];
     ++stats.regions_processed;
     const double travel = approach_travel_m(mesh, region);
@@ -104,7 +109,7 @@ std::vector<int> cord_region_order(const std::vector<GraspRegion>& regions, doub
 
 PlanResult plan_cord_grasps(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
                             const CordParams& cord, const PlanParams& params,
-                            ExplorationStats* exploration) {
+                            ExplorationStats* exploration, const CancelToken& cancel) {
   const auto start = std::chrono::steady_clock::now();
   CordParams explore = cord;
   if (explore.time_limit_s <= 0.0 || explore.time_limit_s > params.time_limit_s)
@@ -115,7 +120,8 @@ PlanResult plan_cord_grasps(const Mesh& mesh, const HandModel& hand, HandObjectC
   if (exploration) *exploration = explored;
   const std::vector<int> order = cord_region_order(regions, w_palm, explore);
   PlanResult result = plan_cord_grasps_from_regions(mesh, hand, collider, regions, params,
-                                                    internal::seconds_since(start), &order);
+                                                    internal::seconds_since(start), &order,
+                                                    cancel);
   if (explored.hit_time_limit && static_cast<int>(result.grasps.size()) < params.grasps)
     result.stats.timed_out = true;  // fewer regions than a faster machine would have found
   return result;

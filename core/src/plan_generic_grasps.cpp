@@ -24,7 +24,8 @@ Eigen::Vector3d outward_face_normal(const Mesh& mesh, int tri, const Eigen::Vect
 }
 
 PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
-                               HandObjectCollider& collider, const PlanParams& params) {
+                               HandObjectCollider& collider, const PlanParams& params,
+                               const CancelToken& cancel) {
   using internal::seconds_since;
   const auto start = std::chrono::steady_clock::now();
   PlanResult result;
@@ -52,6 +53,10 @@ PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
     }
     if (seconds_since(start) > params.time_limit_s) {
       stats.timed_out = true;
+      break;
+    }
+    if (cancel.cancelled()) {
+      stats.interrupted = true;
       break;
     }
     const int tri = pick_triangle(rng);

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "commands.h"
+#include "cordgrasp/core/error.h"
 #include "cordgrasp/jobs/bench_run.h"
 #include "options.h"
 #include "validation_options.h"
@@ -118,12 +119,23 @@ void add_bench_command(CLI::App& app) {
         std::fprintf(stderr, "cordgrasp: warning: %s\n", line.c_str());
       };
     }
+    install_interrupt_handlers();
+    opt->bench.cancel = interrupt_token();
     const BenchRunOutcome out = run_bench(opt->bench, cb);
+    if (!out.interrupted.empty() && !opt->quiet && isatty(STDERR_FILENO))
+      std::fputc('\n', stderr);  // end the progress bar's line
     std::printf("bench: %d/%zu attempts found a force-closure grasp, %d errors -> %s\n", out.ok,
                 out.rows.size(), out.errors, out.results_csv.c_str());
     if (out.errors > 0 && !opt->quiet)
       std::fprintf(stderr, "cordgrasp: warning: bench: %d attempt(s) failed; see the error "
                            "column of results.csv\n", out.errors);
+    if (!out.interrupted.empty()) {
+      std::printf("bench: interrupted by %s after %zu of %d attempts (those in flight "
+                  "abandoned); %s holds those rows, bench.json marked incomplete\n",
+                  out.interrupted.c_str(), out.rows.size(), out.attempts_asked,
+                  opt->bench.out_dir.c_str());
+      throw Interrupted("interrupted by " + out.interrupted);
+    }
     if (out.errors > 0 && opt->strict) throw CLI::RuntimeError(2);
   });
 }

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cordgrasp/jobs/bench_job.h"
+#include "cordgrasp/jobs/json_completeness.h"
 #include "commands.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/version.h"
@@ -38,6 +39,7 @@ void run_merge(const MergeOptions& opt) {
   int attempts_total = -1;
   std::string tests;
   nlohmann::json sources = nlohmann::json::array();
+  std::string interrupted;  // of the first shard that was stopped early, if any
   for (const std::string& dir : opt.dirs) {
     const fs::path meta_path = fs::path(dir) / "bench.json";
     nlohmann::json meta;
@@ -48,6 +50,8 @@ void run_merge(const MergeOptions& opt) {
     }
     if (meta.value("format", "") != "cordgrasp-bench")
       throw InputError("merge: '" + meta_path.string() + "': not a cordgrasp bench output");
+    if (interrupted.empty())
+      interrupted = read_interrupted(meta, "merge: '" + meta_path.string() + "'");
     if (parameters.is_null()) {
       parameters = meta.at("parameters");
       attempts_total = meta.at("attempts_total").get<int>();
@@ -94,6 +98,8 @@ void run_merge(const MergeOptions& opt) {
                          {"attempts", rows.size()},
                          {"shard", nullptr},
                          {"merged_from", sources}};
+  mark_completeness(&meta, interrupted);
+  if (missing > 0) meta["complete"] = false;
   write_bench_outputs(opt.out_dir, rows, meta, info);
   std::printf("merge: %zu rows from %zu directories -> %s\n", rows.size(), opt.dirs.size(),
               (fs::path(opt.out_dir) / "results.csv").string().c_str());

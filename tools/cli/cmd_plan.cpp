@@ -80,6 +80,8 @@ void print_summary(const PlanDocument& doc, const HandModel& hand, const std::st
 }
 
 void run_plan(const PlanOptions& opt) {
+  install_interrupt_handlers();
+  const CancelToken cancel = interrupt_token();
   const std::string object_path = resolve_object_path(opt.object);
   const Mesh mesh = load_job_mesh(opt.job, object_path);
   const HandModel hand = load_hand(opt.hand, opt.hand_load);
@@ -91,12 +93,19 @@ void run_plan(const PlanOptions& opt) {
     doc = plan_validated_grasps(opt.job, opt.validation, sim, mesh, object_path, hand, opt.jobs,
                                 [](const std::string& line) {
                                   std::cerr << "plan: " << line << '\n';
-                                });
+                                },
+                                cancel);
   } else {
-    doc = plan_job(opt.job, mesh, object_path, hand);
+    doc = plan_job(opt.job, mesh, object_path, hand, cancel);
   }
   write_plan_file(opt.out, doc, hand);
   if (!opt.quiet) print_summary(doc, hand, opt.out);
+  if (!doc.interrupted.empty()) {
+    std::cout << "plan: interrupted by " << doc.interrupted << " after " << doc.grasps.size()
+              << " of " << doc.params.grasps << " grasps (" << doc.stats.attempts
+              << " attempts); " << opt.out << " holds those, marked incomplete\n";
+    throw Interrupted("interrupted by " + doc.interrupted);
+  }
   if (doc.grasps.empty())
     throw NoGraspFound(no_grasp_message("plan", doc, mesh) + ". Wrote " + opt.out);
 }

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/object_meshes.h"
 #include "cordgrasp/jobs/plan_validated_grasps.h"
@@ -58,6 +59,8 @@ void add_run_command(CLI::App& app) {
   cmd->callback([opt]() {
     opt->run.render = !opt->no_render;
     opt->run.validate = !opt->no_validate;
+    install_interrupt_handlers();
+    opt->run.cancel = interrupt_token();
     const auto start = std::chrono::steady_clock::now();
     const RunOutcome out = run_job(opt->run, [&](const std::string& line) {
       if (opt->quiet) return;
@@ -72,6 +75,12 @@ void add_run_command(CLI::App& app) {
     if (const auto& v = out.report.plan.validation)
       std::cout << "\n  " << validation_stats_line(v->stats, out.report.plan.params.grasps);
     std::cout << "\n  report " << out.report_path << "\n";
+    if (!out.report.interrupted.empty()) {
+      std::cout << "run: interrupted by " << out.report.interrupted << " during "
+                << out.report.interrupted_at << "; " << opt->run.out_dir
+                << " holds what finished (report.md and the JSON files say so)\n";
+      throw Interrupted("interrupted by " + out.report.interrupted);
+    }
   });
 }
 

@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "options.h"
 #include "cordgrasp/core/assets.h"
+#include "cordgrasp/core/error.h"
 #include "cordgrasp/jobs/text_format.h"
 #include "cordgrasp/jobs/validate_job.h"
 #include "cordgrasp/sim/sim_params.h"
@@ -143,8 +144,17 @@ void add_validate_command(CLI::App& app) {
         std::fprintf(stderr, "validate: %s%d/%d grasps\n",
                      stage == "grasps" ? "" : "trials of ", done, total);
       };
+    install_interrupt_handlers();
+    opt->job.cancel = interrupt_token();
     const SimDocument doc = validate_job(opt->job, cb);
     std::cout << validation_summary(doc, opt->job.tests, opt->job.out);
+    if (!doc.interrupted.empty()) {
+      std::cout << "validate: interrupted by " << doc.interrupted << " after "
+                << doc.results.size() << " of " << doc.grasps_asked
+                << " grasps (every trial of each); " << opt->job.out
+                << " holds those, marked incomplete\n";
+      throw Interrupted("interrupted by " + doc.interrupted);
+    }
   });
 }
 

@@ -3,7 +3,17 @@
 // adds them, in the order --help lists them.
 #include <CLI/CLI.hpp>
 
+#include "cordgrasp/core/cancel_token.h"
+
 namespace cordgrasp::cli {
+
+/// For the commands that stop cleanly (run, plan, validate, bench; main.cpp): the first SIGINT
+/// or SIGTERM sets the flag interrupt_token() views, the job writes what finished marked
+/// incomplete, the command throws Interrupted and main exits with kExitInterrupted (130); the
+/// handler then gives both signals back their default action, so a second one ends the
+/// process at once. A signal ignored when the process started stays ignored.
+void install_interrupt_handlers();
+CancelToken interrupt_token();
 
 void add_run_command(CLI::App& app);             ///< cmd_run.cpp
 void add_info_command(CLI::App& app);            ///< cmd_info.cpp

@@ -1,4 +1,7 @@
 // cordgrasp: cord-driven grasp planning, physics validation and rendering.
+#include <signal.h>
+
+#include <atomic>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -8,6 +11,41 @@
 #include "cordgrasp/core/version.h"
 #include "cordgrasp/render/backend_info.h"
 #include "cordgrasp/sim/backend_info.h"
+
+namespace cordgrasp::cli {
+namespace {
+
+std::atomic<int> g_interrupt_signal{0};  ///< the first SIGINT / SIGTERM received, or 0
+static_assert(std::atomic<int>::is_always_lock_free, "set from a signal handler");
+
+extern "C" void on_interrupt(int signal_number) {
+  if (g_interrupt_signal.load(std::memory_order_relaxed) == 0)
+    g_interrupt_signal.store(signal_number, std::memory_order_relaxed);
+  struct sigaction fallback {};  // a second signal: the default action (ends the process)
+  fallback.sa_handler = SIG_DFL;
+  sigemptyset(&fallback.sa_mask);
+  sigaction(SIGINT, &fallback, nullptr);
+  sigaction(SIGTERM, &fallback, nullptr);
+}
+
+}  // namespace
+
+void install_interrupt_handlers() {
+  for (const int signal_number : {SIGINT, SIGTERM}) {
+    struct sigaction old {};
+    sigaction(signal_number, nullptr, &old);
+    if (old.sa_handler == SIG_IGN) continue;  // e.g. a background job of a script
+    struct sigaction on {};
+    on.sa_handler = on_interrupt;
+    sigemptyset(&on.sa_mask);
+    on.sa_flags = SA_RESTART;
+    sigaction(signal_number, &on, nullptr);
+  }
+}
+
+CancelToken interrupt_token() { return CancelToken(&g_interrupt_signal); }
+
+}  // namespace cordgrasp::cli
 
 int main(int argc, char** argv) {
   using namespace cordgrasp;
@@ -35,6 +73,9 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const Interrupted& e) {
+    std::cerr << "cordgrasp: " << e.what() << '\n';
+    return kExitInterrupted;
   } catch (const NoGraspFound& e) {
     std::cerr << "cordgrasp: " << e.what() << '\n';
     return kExitNoGrasp;

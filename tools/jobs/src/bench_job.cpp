@@ -497,7 +497,7 @@ const HandModel* BenchInputs::hand(const std::string& name, std::string* error) 
 }
 
 BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& params,
-                              const BenchInputs& inputs) {
+                              const BenchInputs& inputs, const CancelToken& cancel) {
   BenchResult result;
   BenchRow& row = result.row;
   row.attempt = attempt.index;
@@ -524,7 +524,8 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
       ValidationParams v = *params.validation;
       v.tests = params.tests == "none" ? std::string("lift,shake") : params.tests;
       v.protocol = params.protocol;
-      plan = plan_validated_grasps(job, v, sim, *mesh, attempt.object_path, *hand);
+      plan = plan_validated_grasps(job, v, sim, *mesh, attempt.object_path, *hand, 1, {},
+                                   cancel);
       const ValidationStats& vs = plan.validation->stats;
       row.validated_accepted = vs.accepted;
       row.validated_candidates = vs.force_closure;
@@ -534,7 +535,11 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
       row.validated_first_accepted_cpu_s = vs.first_accepted_cpu_s;
       row.validated_cpu_s = vs.cpu_s;
     } else {
-      plan = plan_job(job, *mesh, attempt.object_path, *hand);
+      plan = plan_job(job, *mesh, attempt.object_path, *hand, cancel);
+    }
+    if (!plan.interrupted.empty()) {
+      result.interrupted = true;
+      return result;
     }
     const PlanStats& s = plan.stats;
     row.first_fc_s = s.first_force_closure_s;
@@ -559,8 +564,13 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
     if (params.tests == "none") return result;
     sim.contact = plan_contact_model(plan);  // one friction model for planner and physics
     if (params.validation) sim.squeeze_shift_limit_m = params.validation->squeeze_shift_limit_m;
-    const SimDocument doc =
-        validate_plan(plan, *hand, *mesh, sim, sim_tests_from_string(params.tests), 1);
+    const SimDocument doc = validate_plan(plan, *hand, *mesh, sim,
+                                          sim_tests_from_string(params.tests), 1, {}, {}, 1,
+                                          cancel);
+    if (!doc.interrupted.empty()) {
+      result.interrupted = true;
+      return result;
+    }
     if (!doc.results.empty()) {
       const SimResult& r = doc.results.front();
       auto phase = [&](const char* name) {
@@ -583,14 +593,20 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
 
 std::vector<BenchResult> run_bench_attempts(const std::vector<BenchAttempt>& attempts,
                                             const BenchParams& params, const BenchInputs& inputs,
-                                            int jobs, const BenchProgress& progress) {
+                                            int jobs, const BenchProgress& progress,
+                                            const CancelToken& cancel) {
   std::vector<BenchResult> results(attempts.size());
   std::mutex mutex;
   int done = 0;
   const int total = static_cast<int>(attempts.size());
   parallel_for(total, jobs, [&](int i) {
     const size_t k = static_cast<size_t>(i);
-    results[k] = run_bench_attempt(attempts[k], params, inputs);
+    if (cancel.cancelled()) {  // no new attempt once a stop is asked for
+      results[k].interrupted = true;
+      return;
+    }
+    results[k] = run_bench_attempt(attempts[k], params, inputs, cancel);
+    if (results[k].interrupted) return;
     const std::lock_guard<std::mutex> lock(mutex);
     ++done;
     if (progress) progress(done, total, results[k].row);
@@ -635,6 +651,10 @@ std::string bench_summary_markdown(const std::vector<BenchRow>& rows,
   out << "- machine: " << info.machine << "\n";
   out << "- attempts: " << rows.size() << " of " << info.attempts_total;
   if (!info.shard.empty()) out << " (shard " << info.shard << ")";
+  if (!info.interrupted.empty())
+    out << "\n- **incomplete: interrupted by " << info.interrupted << " after " << rows.size()
+        << " of " << info.attempts_asked
+        << " attempts**; the attempts in flight were abandoned and the rest did not run";
   out << "\n- physics tests on each attempt's first grasp: "
       << (info.tests.empty() ? "none" : info.tests) << "\n";
   const auto timed_out = std::count_if(rows.begin(), rows.end(),

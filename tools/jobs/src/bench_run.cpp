@@ -7,6 +7,7 @@
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/version.h"
 #include "cordgrasp/jobs/hand_scene.h"
+#include "cordgrasp/jobs/json_completeness.h"
 #include "cordgrasp/jobs/render_options.h"
 #include "cordgrasp/render/contact_sheet.h"
 #include "cordgrasp/render/png_io.h"
@@ -141,18 +142,25 @@ BenchRunOutcome run_bench(const BenchRunParams& opt, const BenchRunCallbacks& cb
             " on " + std::to_string(opt.jobs) + " thread(s) -> " + opt.out_dir);
   const BenchInputs inputs(params, attempts);
   const std::vector<BenchResult> results =
-      run_bench_attempts(attempts, params, inputs, opt.jobs, cb.progress);
+      run_bench_attempts(attempts, params, inputs, opt.jobs, cb.progress, opt.cancel);
 
   std::vector<BenchRow> rows;
-  for (const BenchResult& r : results) rows.push_back(r.row);
+  std::vector<BenchResult> finished;
+  for (const BenchResult& r : results)
+    if (!r.interrupted) finished.push_back(r);
+  for (const BenchResult& r : finished) rows.push_back(r.row);
+  const std::string interrupted =
+      finished.size() < results.size() ? opt.cancel.reason() : std::string();
   BenchSummaryInfo info;
   info.command = process_command_line();
   info.machine = machine_description();
   info.attempts_total = static_cast<int>(all.size());
   info.shard = shard_n > 1 ? opt.shard : "";
   info.tests = params.tests;
-  if (!opt.no_sheets)
-    info.sheets = write_contact_sheets(results, inputs, opt.sheet_size, opt.out_dir, cb);
+  info.interrupted = interrupted;
+  info.attempts_asked = static_cast<int>(attempts.size());
+  if (!opt.no_sheets && interrupted.empty())
+    info.sheets = write_contact_sheets(finished, inputs, opt.sheet_size, opt.out_dir, cb);
   nlohmann::json meta = {{"format", "cordgrasp-bench"},
                          {"format_version", 1},
                          {"cordgrasp_version", version()},
@@ -162,6 +170,7 @@ BenchRunOutcome run_bench(const BenchRunParams& opt, const BenchRunCallbacks& cb
                          {"attempts_total", all.size()},
                          {"attempts", rows.size()},
                          {"shard", shard_n > 1 ? nlohmann::json(opt.shard) : nlohmann::json()}};
+  mark_completeness(&meta, interrupted);
   write_bench_outputs(opt.out_dir, rows, meta, info);
 
   BenchRunOutcome out;
@@ -171,6 +180,8 @@ BenchRunOutcome run_bench(const BenchRunParams& opt, const BenchRunCallbacks& cb
     out.errors += r.status == "error";
   }
   out.results_csv = (fs::path(opt.out_dir) / "results.csv").string();
+  out.attempts_asked = static_cast<int>(attempts.size());
+  out.interrupted = interrupted;
   return out;
 }
 

@@ -98,14 +98,15 @@ PlanDocument plan_document_for(const PlanJobParams& p, const Mesh& mesh,
 }
 
 PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::string& object_path,
-                      const HandModel& hand) {
+                      const HandModel& hand, const CancelToken& cancel) {
   PlanDocument doc = plan_document_for(p, mesh, object_path, hand);
   auto collider = make_bullet_hand_collider(hand, mesh);
   PlanResult result;
   if (p.planner == "cord")
-    result = plan_cord_grasps(mesh, hand, *collider, *doc.cord, doc.params);
+    result = plan_cord_grasps(mesh, hand, *collider, *doc.cord, doc.params, nullptr, cancel);
   else
-    result = plan_generic_grasps(mesh, hand, *collider, doc.params);
+    result = plan_generic_grasps(mesh, hand, *collider, doc.params, cancel);
+  if (result.stats.interrupted) doc.interrupted = cancel.reason();
   doc.stats = result.stats;
   doc.grasps = std::move(result.grasps);
   return doc;

@@ -10,6 +10,7 @@
 
 #include "cordgrasp/core/atomic_file.h"
 #include "cordgrasp/core/error.h"
+#include "cordgrasp/jobs/json_completeness.h"
 #include "json_util.h"
 #include "params_json.h"
 
@@ -236,6 +237,7 @@ nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand) {
   if (plan.validation)
     out["validation"] = {{"parameters", params_to_json(plan.validation->params)},
                          {"stats", params_to_json(plan.validation->stats)}};
+  mark_completeness(&out, plan.interrupted);
   return out;
 }
 
@@ -300,6 +302,8 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
       throw InputError(source + ": parameters.planner: unknown planner '" + p.planner +
                        "' (allowed: cord, generic)");
     p.stats = stats_from_json(j.value("stats", nlohmann::json::object()));
+    p.interrupted = read_interrupted(j, source);
+    p.stats.interrupted = !p.interrupted.empty();
     if (p.hand_name != hand.name)
       throw InputError(source + ": made for hand '" + p.hand_name + "', not '" + hand.name + "'");
     if (j.contains("validation")) {

@@ -56,12 +56,14 @@ void add_stats(PlanStats& total, const PlanStats& s) {
 /// exploration); the generic planner is called again with the next seed.
 class CandidateSource {
  public:
-  CandidateSource(const PlanDocument& doc, const Mesh& mesh, const HandModel& hand)
-      : doc_(doc), mesh_(mesh), hand_(hand), collider_(make_bullet_hand_collider(hand, mesh)) {}
+  CandidateSource(const PlanDocument& doc, const Mesh& mesh, const HandModel& hand,
+                  const CancelToken& cancel)
+      : doc_(doc), mesh_(mesh), hand_(hand), cancel_(cancel),
+        collider_(make_bullet_hand_collider(hand, mesh)) {}
 
   /// The next candidate, or nullopt when the planner has none left within `time_left_s`.
   std::optional<Grasp> next(double time_left_s, PlanStats& stats) {
-    if (time_left_s <= 0.0) return std::nullopt;
+    if (time_left_s <= 0.0 || cancel_.cancelled()) return std::nullopt;
     PlanParams params = doc_.params;
     params.grasps = 1;
     params.time_limit_s = time_left_s;
@@ -70,8 +72,9 @@ class CandidateSource {
       while (order_.empty() && explorations_ < kMaxExplorations) explore(time_left_s, stats);
       if (order_.empty()) return std::nullopt;
       const PlanResult r = plan_cord_grasps_from_regions(mesh_, hand_, *collider_, regions_,
-                                                         params, 0.0, &order_);
+                                                         params, 0.0, &order_, cancel_);
       add_stats(stats, r.stats);
+      if (r.stats.interrupted) return std::nullopt;
       if (r.grasps.empty()) {
         order_.clear();
         return next(time_left_s - r.stats.total_s, stats);
@@ -86,7 +89,7 @@ class CandidateSource {
     }
     params.seed = doc_.params.seed + calls_++;
     params.quality.seed = params.seed;
-    const PlanResult r = plan_generic_grasps(mesh_, hand_, *collider_, params);
+    const PlanResult r = plan_generic_grasps(mesh_, hand_, *collider_, params, cancel_);
     add_stats(stats, r.stats);
     if (r.grasps.empty()) return std::nullopt;
     return r.grasps.front();
@@ -112,6 +115,7 @@ class CandidateSource {
   const PlanDocument& doc_;
   const Mesh& mesh_;
   const HandModel& hand_;
+  CancelToken cancel_;
   std::unique_ptr<HandObjectCollider> collider_;
   static constexpr int kMaxExplorations = 4;  ///< the first and three with later seeds
   int explorations_ = 0;
@@ -145,7 +149,8 @@ bool grasps_differ(const Grasp& a, const Grasp& b, const ValidationParams& p) {
 PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationParams& v,
                                    const SimParams& sim_in, const Mesh& mesh,
                                    const std::string& object_path, const HandModel& hand,
-                                   int jobs, const ValidatedPlanProgress& progress) {
+                                   int jobs, const ValidatedPlanProgress& progress,
+                                   const CancelToken& cancel) {
   if (v.trials < 1 || v.trials > 1000)
     throw std::invalid_argument("plan_validated_grasps: trials must be in [1, 1000], got " +
                                 std::to_string(v.trials));
@@ -169,10 +174,15 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
   sim.squeeze_shift_limit_m = v.squeeze_shift_limit_m;
 
   const int wanted = std::max(1, doc.params.grasps);
-  CandidateSource source(doc, mesh, hand);
+  CandidateSource source(doc, mesh, hand, cancel);
   PlanStats& stats = doc.stats;
   int candidate = -1;
+  bool interrupted = false;  // stopped by `cancel` before the other rules
   while (static_cast<int>(doc.grasps.size()) < wanted) {
+    if (cancel.cancelled()) {
+      interrupted = true;
+      break;
+    }
     const double left_s = v.budget_s - cpu_used();
     if (left_s <= 0.0) {
       vs.budget_spent = true;
@@ -182,7 +192,8 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
     std::optional<Grasp> g = source.next(left_s, stats);
     vs.planning_s += seconds_since(plan_start);
     if (!g) {
-      vs.budget_spent = v.budget_s - cpu_used() <= 0.0;
+      interrupted = cancel.cancelled();
+      vs.budget_spent = !interrupted && v.budget_s - cpu_used() <= 0.0;
       break;
     }
     ++candidate;
@@ -215,7 +226,7 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
       const int held = count_held(o);
       return held >= v.min_held || held + (v.trials - static_cast<int>(o.size())) < v.min_held;
     };
-    while (!decided(outcomes)) {
+    while (!decided(outcomes) && !cancel.cancelled()) {
       const int from = static_cast<int>(outcomes.size());
       const int batch = std::min(std::max(1, jobs), v.trials - from);
       std::vector<Outcome> more(static_cast<size_t>(batch), Outcome::kNotRun);
@@ -232,6 +243,10 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
       }
     }
     vs.physics_s += seconds_since(physics_start);
+    if (!decided(outcomes)) {  // cancelled between trial batches: abandon the candidate
+      interrupted = true;
+      break;
+    }
     const int held = count_held(outcomes);
     const bool accepted = held >= v.min_held;
     say("candidate " + std::to_string(candidate) + ": held in " + std::to_string(held) + " / " +
@@ -264,6 +279,10 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
   vs.cpu_s = cpu_used();
   stats.total_s = vs.total_s;
   stats.timed_out = vs.budget_spent;
+  if (interrupted) {
+    stats.interrupted = true;
+    doc.interrupted = cancel.reason();
+  }
   return doc;
 }
 

@@ -72,13 +72,28 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   RunReport& report = out.report;
   if (validated)
     report.plan = plan_validated_grasps(opt.job, validation, base, *mesh, object_path, hand,
-                                        opt.jobs, progress);
+                                        opt.jobs, progress, opt.cancel);
   else
-    report.plan = plan_job(opt.job, *mesh, object_path, hand);
+    report.plan = plan_job(opt.job, *mesh, object_path, hand, opt.cancel);
   report.plan_wall_s = seconds_since(t);
   const PlanDocument& plan = report.plan;
   const std::string plan_path = (fs::path(opt.out_dir) / "plan.json").string();
+  const std::string report_path = (fs::path(opt.out_dir) / "report.md").string();
   write_plan_file(plan_path, plan, hand);
+  out.plan_path = plan_path;
+  // Stopped early: report.md says where; the files written hold what finished.
+  const auto stop = [&](const std::string& reason, const std::string& at) {
+    report.interrupted = reason;
+    report.interrupted_at = at;
+    write_file_atomically(report_path, run_report_markdown(report));
+    for (const SimResult& r : out.sim.results) out.held += r.held();
+    out.report_path = report_path;
+    report.sim = nullptr;  // points into `out`, which moves on return
+    return std::move(out);
+  };
+  if (!plan.interrupted.empty())
+    return stop(plan.interrupted, "planning, after " + std::to_string(plan.grasps.size()) +
+                                      " of " + std::to_string(plan.params.grasps) + " grasps");
   // Physics sees the plan as written (poses as quaternions), so `cordgrasp validate --plan
   // plan.json` later reproduces these outcomes exactly.
   const PlanDocument written = plan_from_json(read_plan_json(plan_path), hand, plan_path);
@@ -88,7 +103,6 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   else
     progress("plan: " + std::to_string(n) + " force-closure grasp(s), " +
              std::to_string(plan.stats.attempts) + " attempts");
-  const std::string report_path = (fs::path(opt.out_dir) / "report.md").string();
   if (n == 0 && plan.validation && plan.validation->stats.force_closure > 0) {
     write_file_atomically(report_path, run_report_markdown(report));
     throw NoGraspFound("run: no grasp of " + mesh->name + " with " + hand.name +
@@ -128,12 +142,15 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
           progress("physics: grasp " + std::to_string(done) + "/" + std::to_string(total) +
                        " " + sim_result_line(r));
         },
-        hooks, opt.jobs);
+        hooks, opt.jobs, opt.cancel);
     sim.plan_path = fs::absolute(plan_path).lexically_normal().string();
     report.sim_wall_s = seconds_since(t);
     out.sim_path = (fs::path(opt.out_dir) / "sim.json").string();
     write_sim_file(out.sim_path, sim, hand);
     report.sim = &sim;
+    if (!sim.interrupted.empty())
+      return stop(sim.interrupted, "physics, after " + std::to_string(sim.results.size()) +
+                                       " of " + std::to_string(n) + " grasps");
   }
 
   // 3. Pictures: each planned grasp (cords, contacts), its physics frames, a contact sheet.
@@ -146,6 +163,11 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
     std::vector<Image> tiles;
     std::vector<std::string> captions;
     for (int k = 0; k < n; ++k) {
+      if (opt.cancel.cancelled()) {
+        report.render_wall_s = seconds_since(t);
+        return stop(opt.cancel.reason(), "rendering, after " + std::to_string(k) + " of " +
+                                             std::to_string(n) + " grasps");
+      }
       const Grasp& g = plan.grasps[static_cast<size_t>(k)];
       GraspPictures pics;
       Scene scene = grasp_scene(hand, meshes, mesh, g, g.region ? &*g.region : nullptr, overlay);
@@ -203,7 +225,6 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
 
   write_file_atomically(report_path, run_report_markdown(report));
   for (const SimResult& r : sim.results) out.held += r.held();
-  out.plan_path = plan_path;
   out.report_path = report_path;
   report.sim = nullptr;  // points into `out`, which moves on return
   return out;

@@ -33,6 +33,9 @@ std::string run_report_markdown(const RunReport& rep) {
      << plan.planner << " planner\n\n";
   md << "cordgrasp " << plan.cordgrasp_version << ". Files: `plan.json` (grasps), "
      << (rep.sim ? "`sim.json` (physics), " : "") << "PNG pictures, this report.\n\n";
+  if (!rep.interrupted.empty())
+    md << "**Incomplete: interrupted by " << rep.interrupted << " during " << rep.interrupted_at
+       << ".** The files hold only what finished before; later stages did not run.\n\n";
 
   md << "## Inputs\n\n";
   md << "- Object: `" << plan.object_path << "` (" << plan.object_triangles << " triangles, units "
@@ -68,6 +71,10 @@ std::string run_report_markdown(const RunReport& rep) {
   if (plan.validation)
     md << "Validated planning: " << validation_stats_line(plan.validation->stats, plan.params.grasps)
        << ".\n\n";
+  if (n == 0 && !rep.interrupted.empty()) {
+    md << "**No grasp** found before the interruption (" << s.attempts << " attempts).\n";
+    return md.str();
+  }
   if (n == 0 && plan.validation && plan.validation->stats.force_closure > 0) {
     md << "**No grasp held** in physics.\n";
     return md.str();

@@ -10,6 +10,7 @@
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/version.h"
 #include "cordgrasp/sim/backend_info.h"
+#include "cordgrasp/jobs/json_completeness.h"
 #include "json_util.h"
 #include "params_json.h"
 #include "cordgrasp/jobs/text_format.h"
@@ -101,11 +102,12 @@ nlohmann::json sim_to_json(const SimDocument& doc, const HandModel& hand) {
   nlohmann::json params = sim_params_to_json(doc.params);
   params["tests"] = to_string(doc.tests);
   const bool repeated = !doc.trial_outcomes.empty();
-  params["trials"] = repeated ? static_cast<int>(doc.trial_outcomes.front().size()) : 1;
+  params["trials"] =
+      repeated ? static_cast<int>(doc.trial_outcomes.front().size()) : std::max(1, doc.trials);
   params["trial_offset_m"] = doc.trial_perturbation.offset_m;
   params["trial_turn_rad"] = doc.trial_perturbation.turn_rad;
   params["trial_seed"] = doc.trial_seed;
-  return {{"format", kFormat},
+  nlohmann::json out = {{"format", kFormat},
           {"format_version", kFormatVersion},
           {"cordgrasp_version", version()},
           {"backend", sim_backend_version()},
@@ -129,6 +131,8 @@ nlohmann::json sim_to_json(const SimDocument& doc, const HandModel& hand) {
             {"wall_time_s", doc.wall_time_s},
             {"trials", repeated ? nlohmann::json(total_trials) : nlohmann::json(nullptr)},
             {"held_trials", repeated ? nlohmann::json(held_trials) : nlohmann::json(nullptr)}}}};
+  mark_completeness(&out, doc.interrupted);
+  return out;
 }
 
 void write_sim_file(const std::string& path, const SimDocument& doc, const HandModel& hand) {
@@ -150,6 +154,7 @@ nlohmann::json read_sim_json(const std::string& path) {
   if (j.value("format_version", 0) != kFormatVersion)
     throw InputError("read_sim: '" + path + "': unsupported format_version " +
                      j.value("format_version", nlohmann::json(nullptr)).dump());
+  (void)read_interrupted(j, "read_sim: '" + path + "'");  // a wrong type fails here
   return j;
 }
 

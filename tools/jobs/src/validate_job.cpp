@@ -131,8 +131,10 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
         }
         if (cb.progress) cb.progress("grasps", done, total);
       },
-      hooks, renderer ? 1 : opt.jobs);  // pictures are drawn on this thread, one grasp at a time
-  if (opt.trials > 1)
+      hooks, renderer ? 1 : opt.jobs,  // pictures are drawn on this thread, one grasp at a time
+      opt.cancel);
+  const int asked = doc.grasps_asked;
+  if (opt.trials > 1)  // interrupted above: no trial runs, and no grasp has all its trials
     add_perturbed_trials(doc, plan, hand, mesh, opt.trials, opt.perturbation, opt.seed,
                          [&](int done, int total, const SimResult&) {
                            if (cb.grasp_line)
@@ -141,11 +143,12 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
                                                done - 1)]));
                            if (cb.progress) cb.progress("trials of grasps", done, total);
                          },
-                         opt.jobs);
+                         opt.jobs, opt.cancel);
+  doc.grasps_asked = asked;
   doc.plan_path = canonical(opt.plan);
   doc.object_path = opt.object.empty() ? plan.object_path : canonical(opt.object);
   if (!opt.trace_path.empty()) {
-    for (const std::string& rows : trace_rows) trace << rows;
+    for (const int k : doc.grasp_indices) trace << trace_rows[static_cast<size_t>(k)];
     write_file_atomically(opt.trace_path, trace.str());
   }
   write_sim_file(opt.out, doc, hand);

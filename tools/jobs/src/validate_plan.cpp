@@ -11,11 +11,31 @@
 #include "parallel_for.h"
 
 namespace cordgrasp {
+namespace {
+
+/// Keeps only the grasps of `doc` with keep[k] set (results, grasps, indices, trials).
+void keep_grasps(SimDocument& doc, const std::vector<char>& keep) {
+  size_t to = 0;
+  for (size_t k = 0; k < doc.results.size(); ++k) {
+    if (!keep[k]) continue;
+    doc.results[to] = std::move(doc.results[k]);
+    doc.grasps[to] = std::move(doc.grasps[k]);
+    doc.grasp_indices[to] = doc.grasp_indices[k];
+    if (k < doc.trial_outcomes.size()) doc.trial_outcomes[to] = std::move(doc.trial_outcomes[k]);
+    ++to;
+  }
+  doc.results.resize(to);
+  doc.grasps.resize(to);
+  doc.grasp_indices.resize(to);
+  if (!doc.trial_outcomes.empty()) doc.trial_outcomes.resize(to);
+}
+
+}  // namespace
 
 SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const Mesh& mesh,
                           const SimParams& params, const SimTests& tests, int max_grasps,
                           const ValidateProgress& progress, const GraspPhaseHooks& hooks,
-                          int jobs) {
+                          int jobs, const CancelToken& cancel) {
   const auto start = std::chrono::steady_clock::now();
   SimDocument doc;
   doc.hand_name = plan.hand_name;
@@ -31,6 +51,7 @@ SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const
   const int total = max_grasps < 0 ? static_cast<int>(plan.grasps.size())
                                    : std::min(max_grasps, static_cast<int>(plan.grasps.size()));
   doc.results.resize(static_cast<size_t>(total));
+  doc.grasps_asked = total;
   for (int k = 0; k < total; ++k) {
     doc.grasps.push_back(plan.grasps[static_cast<size_t>(k)]);
     doc.grasp_indices.push_back(k);
@@ -39,12 +60,19 @@ SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const
   InOrderReporter reporter(total, [&](int k) {
     if (progress) progress(k + 1, total, doc.results[static_cast<size_t>(k)]);
   });
+  std::vector<char> done(static_cast<size_t>(total), 0);
   parallel_for(total, jobs, [&](int k) {
+    if (cancel.cancelled()) return;  // no new grasp; those in flight finish
     const Grasp& g = plan.grasps[static_cast<size_t>(k)];
     doc.results[static_cast<size_t>(k)] =
         validate_grasp(mesh, hand, g, params, tests, hooks ? hooks(k) : PhaseHook{});
+    done[static_cast<size_t>(k)] = 1;
     reporter.finished(k);
   });
+  if (std::count(done.begin(), done.end(), 0) > 0) {
+    keep_grasps(doc, done);
+    doc.interrupted = cancel.reason();
+  }
   doc.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return doc;
@@ -52,13 +80,15 @@ SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const
 
 void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const HandModel& hand,
                           const Mesh& mesh, int trials, const PerturbationParams& perturbation,
-                          std::uint64_t seed, const ValidateProgress& progress, int jobs) {
+                          std::uint64_t seed, const ValidateProgress& progress, int jobs,
+                          const CancelToken& cancel) {
   if (trials < 1 || trials > 1000)
     throw std::invalid_argument("add_perturbed_trials: trials must be in [1, 1000], got " +
                                 std::to_string(trials));
   const auto start = std::chrono::steady_clock::now();
   doc.trial_perturbation = perturbation;
   doc.trial_seed = seed;
+  doc.trials = trials;
   doc.trial_outcomes.assign(doc.results.size(), {});
   const int total = static_cast<int>(doc.results.size());
   const int per_grasp = trials - 1;  // trial 0 is doc.results[k]
@@ -75,6 +105,7 @@ void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const Hand
   if (per_grasp == 0)
     for (int k = 0; k < total; ++k) reporter.finished(k);
   parallel_for(total * per_grasp, jobs, [&](int task) {
+    if (cancel.cancelled()) return;  // no new trial; those in flight finish
     const int k = task / per_grasp, t = 1 + task % per_grasp;
     const Grasp& planned = plan.grasps[static_cast<size_t>(doc.grasp_indices[static_cast<size_t>(k)])];
     const Grasp g = perturbed_grasp(planned, perturbation, seed + 1000 * k + t);
@@ -87,6 +118,12 @@ void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const Hand
     }
     if (grasp_done) reporter.finished(k);
   });
+  std::vector<char> complete(static_cast<size_t>(total), 0);
+  for (int k = 0; k < total; ++k) complete[static_cast<size_t>(k)] = trials_left[static_cast<size_t>(k)] == 0;
+  if (std::count(complete.begin(), complete.end(), 0) > 0) {
+    keep_grasps(doc, complete);
+    doc.interrupted = cancel.reason();
+  }
   doc.wall_time_s +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

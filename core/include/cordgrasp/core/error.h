@@ -17,6 +17,13 @@ class NoGraspFound : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A job stopped early on request (SIGINT / SIGTERM, CancelToken) after writing what it had,
+/// marked incomplete; the tools exit with kExitInterrupted. The message says what was written.
+class Interrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 /// Exit codes of the tools: 1 = error (one line on stderr), 2 = `bench --strict` with error
 /// rows, 3 = no force-closure grasp found, 130 = interrupted (SIGINT), 105–120 = CLI11 refusals.
 constexpr int kExitError = 1;

@@ -52,6 +52,7 @@ struct PlanStats {
   /// the result depends on the machine's speed.
   bool timed_out = false;
   bool attempt_budget_reached = false;  ///< stopped by max_attempts before finding `grasps`
+  bool interrupted = false;    ///< stopped by a CancelToken (SIGINT) before its other limits
 };
 
 /// Planned grasps (force-closure ones, in the order found) and statistics.

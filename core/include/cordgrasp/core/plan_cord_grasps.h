@@ -1,6 +1,7 @@
 #pragma once
 #include <vector>
 
+#include "cordgrasp/core/cancel_token.h"
 #include "cordgrasp/core/cord_params.h"
 #include "cordgrasp/core/explore_cords.h"
 #include "cordgrasp/core/grasp_plan.h"
@@ -20,12 +21,14 @@ double approach_travel_m(const Mesh& mesh, const GraspRegion& region);
 /// then rolled 180° if that fails. `regions` may come in any order; `order`, when given, is the
 /// processing order instead (indices into `regions`); a grasp's region_rank is its region's
 /// position in the processing order. `exploration_s` is recorded in the stats and every grasp's
-/// times. `collider` must be built for this hand and mesh.
+/// times. `collider` must be built for this hand and mesh. `cancel` is checked before each
+/// region (PlanStats::interrupted).
 PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand,
                                          HandObjectCollider& collider,
                                          const std::vector<GraspRegion>& regions,
                                          const PlanParams& params, double exploration_s = 0.0,
-                                         const std::vector<int>* order = nullptr);
+                                         const std::vector<int>* order = nullptr,
+                                         const CancelToken& cancel = {});
 
 /// Processing order of the cord planner: regions in ascending χ, except that sets shrunk by
 /// SideCordPolicy::kShrink (n below cords_per_side(), docs/algorithm.md §4) come after every full
@@ -39,9 +42,11 @@ std::vector<int> cord_region_order(const std::vector<GraspRegion>& regions, doub
 /// The cord-driven planner (paper §III–§V): explore_cords() with W_palm = palm_width(hand), then
 /// plan_cord_grasps_from_regions() in cord_region_order(). The exploration shares
 /// params.time_limit_s (its own cap is min(cord.time_limit_s, params.time_limit_s)).
-/// `exploration`, when given, receives its stats.
+/// `exploration`, when given, receives its stats; `cancel` stops the finger stage early (the
+/// exploration runs to its end).
 PlanResult plan_cord_grasps(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
                             const CordParams& cord, const PlanParams& params,
-                            ExplorationStats* exploration = nullptr);
+                            ExplorationStats* exploration = nullptr,
+                            const CancelToken& cancel = {});
 
 }  // namespace cordgrasp

@@ -2,6 +2,7 @@
 #include <Eigen/Core>
 #include <random>
 
+#include "cordgrasp/core/cancel_token.h"
 #include "cordgrasp/core/grasp_plan.h"
 #include "cordgrasp/core/hand_collider.h"
 #include "cordgrasp/core/hand_model.h"
@@ -18,7 +19,9 @@ Eigen::Vector3d outward_face_normal(const Mesh& mesh, int tri, const Eigen::Vect
 /// surface point (area-weighted), GCP there with +z along the inward normal and a uniform random
 /// roll, retreat until collision-free, close, force-closure check; repeated until params.grasps
 /// force-closure grasps, the time limit or params.max_attempts. Seeded by params.seed.
+/// `cancel` is checked before each attempt (PlanStats::interrupted).
 PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
-                               HandObjectCollider& collider, const PlanParams& params);
+                               HandObjectCollider& collider, const PlanParams& params,
+                               const CancelToken& cancel = {});
 
 }  // namespace cordgrasp

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "cordgrasp/core/cancel_token.h"
 #include "cordgrasp/core/grasp.h"
 #include "cordgrasp/core/hand_description.h"
 #include "cordgrasp/core/hand_model.h"
@@ -141,21 +142,26 @@ class BenchInputs {
 struct BenchResult {
   BenchRow row;
   std::optional<Grasp> first_grasp;  ///< carries its cord region
+  /// Stopped by a CancelToken before it finished (or before it began): not a result, no row.
+  bool interrupted = false;
 };
 
 /// Runs one attempt: plan_job, then (unless tests are "none") validate_plan of the first grasp
-/// with the plan's μ. Never throws: failures become status "error".
+/// with the plan's μ. Never throws: failures become status "error". `cancel` reaches the
+/// planner and the physics: an attempt it cut short comes back with `interrupted` set.
 BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& params,
-                              const BenchInputs& inputs);
+                              const BenchInputs& inputs, const CancelToken& cancel = {});
 
 /// Called after each finished attempt (from the worker thread, serialized): done, total, row.
 using BenchProgress = std::function<void(int done, int total, const BenchRow& row)>;
 
 /// Runs `attempts` on `jobs` threads (each attempt independent); results in the order of
-/// `attempts`, whatever `jobs`.
+/// `attempts`, whatever `jobs`. Once `cancel` is set no attempt starts and those in flight are
+/// abandoned: their results have `interrupted` set (progress is called for finished ones only).
 std::vector<BenchResult> run_bench_attempts(const std::vector<BenchAttempt>& attempts,
                                             const BenchParams& params, const BenchInputs& inputs,
-                                            int jobs, const BenchProgress& progress = {});
+                                            int jobs, const BenchProgress& progress = {},
+                                            const CancelToken& cancel = {});
 
 /// bench.json "parameters": everything rows depend on (not --jobs, --shard, output options);
 /// "job" holds every PlanJobParams field but the planner (its Serialize visitor).
@@ -173,6 +179,8 @@ struct BenchSummaryInfo {
   std::string shard;       ///< "k/N", or "" for a whole bench
   std::string tests;       ///< physics tests run on the first grasps
   std::vector<std::string> sheets;  ///< contact sheet files (relative to the output dir)
+  std::string interrupted;  ///< the signal that stopped the bench early ("SIGINT"), or ""
+  int attempts_asked = 0;   ///< attempts this run (its shard) was to make, when interrupted
 };
 
 /// summary.md: per object × hand × planner, then per hand × planner over all objects, then

@@ -28,6 +28,9 @@ struct BenchRunParams {
   std::string sheet_size = "480x360";   ///< contact sheet tile size WxH [px]
   std::string out_dir;                  ///< output folder (created)
   bool overwrite = false;  ///< replace another bench's results in out_dir (else refused)
+  /// Stop request: no attempt starts once it is set, those in flight are abandoned; the rows
+  /// finished are written with bench.json "complete": false (no contact sheets).
+  CancelToken cancel;
 };
 
 /// What run_bench() wrote.
@@ -36,6 +39,8 @@ struct BenchRunOutcome {
   int ok = 0;                ///< attempts with a force-closure grasp
   int errors = 0;            ///< attempts that failed with an error
   std::string results_csv;   ///< path of results.csv
+  int attempts_asked = 0;    ///< attempts of this run (its shard)
+  std::string interrupted;   ///< the signal that stopped it early ("SIGINT"), or ""
 };
 
 /// Messages of a bench run: `note` (start line), `warning`, and per-attempt progress.

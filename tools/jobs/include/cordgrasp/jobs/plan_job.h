@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "cordgrasp/core/cancel_token.h"
 #include "cordgrasp/core/contact_model.h"
 #include "cordgrasp/core/cord_params.h"
 #include "cordgrasp/core/grasp_plan.h"
@@ -55,9 +56,11 @@ PlanDocument plan_document_for(const PlanJobParams& p, const Mesh& mesh,
                                const std::string& object_path, const HandModel& hand);
 
 /// Plans grasps on `mesh` (loaded from `object_path`) with `hand`: the document plan.json
-/// holds. Deterministic for a given seed (timings aside).
+/// holds. Deterministic for a given seed (timings aside). `cancel` stops the finger stage
+/// before its next attempt: the document then holds the grasps found so far and
+/// doc.interrupted names the signal.
 PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::string& object_path,
-                      const HandModel& hand);
+                      const HandModel& hand, const CancelToken& cancel = {});
 
 /// One line on a plan that found no force-closure grasp: "<who>: no force-closure grasp of
 /// <object> with <hand> (<planner> planner, N attempts in T s, <why it stopped>); try ...",

@@ -25,6 +25,8 @@
 //             validation (validated plans only): every GraspValidation field}]
 //   validation (validated plans only): {parameters: every ValidationParams field,
 //                                        stats: every ValidationStats field}
+//   complete: false when the planning was interrupted (SIGINT), with interrupted: "SIGINT"; the
+//             grasps are those found before (json_completeness.h; absent in older files: true)
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -59,6 +61,8 @@ struct PlanDocument {
   /// Validated planning (plan_validated_grasps): its settings, counts and one verdict per grasp;
   /// unset for a plan of force-closure grasps only.
   std::optional<PlanValidation> validation;
+  /// The signal that stopped the planning early ("SIGINT"); "" when it ran to its end.
+  std::string interrupted;
 };
 
 /// JSON of a plan (layout above); joint and link names come from `hand`.

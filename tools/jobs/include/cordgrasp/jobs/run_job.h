@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "cordgrasp/core/cancel_token.h"
 #include "cordgrasp/jobs/grasp_validation.h"
 #include "cordgrasp/core/hand_description.h"
 #include "cordgrasp/jobs/plan_job.h"
@@ -32,6 +33,9 @@ struct RunParams {
   PictureOptions picture;      ///< size of the pictures (view: iso)
   bool render = true;          ///< write PNGs (planned grasps, physics frames, contact sheet)
   std::string out_dir;         ///< output folder, created if missing
+  /// Stop request, checked in the planner, before each grasp's physics and before each
+  /// grasp's pictures; what finished is written, marked incomplete (RunReport::interrupted).
+  CancelToken cancel;
 };
 
 /// What run_job() wrote.
@@ -49,7 +53,9 @@ using RunProgress = std::function<void(const std::string&)>;
 /// Physics sees the plan as written to plan.json, so `cordgrasp validate --plan` reproduces
 /// its outcomes. @throws InputError for bad inputs (before any work), NoGraspFound when
 /// no force-closure grasp was found, or with p.validate none held (plan.json and report.md are
-/// written first).
+/// written first). Stopped by p.cancel, it writes plan.json (and sim.json when physics had
+/// begun) with what finished, marked incomplete, and report.md saying so, and returns with
+/// report.interrupted set (NoGraspFound is not thrown then).
 RunOutcome run_job(const RunParams& p, const RunProgress& progress = {});
 
 }  // namespace cordgrasp

@@ -23,6 +23,10 @@ struct RunReport {
   double plan_wall_s = 0.0;
   double sim_wall_s = 0.0;
   double render_wall_s = 0.0;
+  /// The signal that stopped the run early ("SIGINT"), "" when it ran to its end, and where:
+  /// "planning", "physics after 1 of 3 grasps", "rendering after 2 of 3 grasps".
+  std::string interrupted;
+  std::string interrupted_at;
 };
 
 /// Markdown text of report.md: inputs and parameters, the grasps (α, ε, χ, region, physics

@@ -18,6 +18,9 @@
 //   summary: {grasps, held, outcomes: {held, slipped, dropped, unstable}, wall_time_s,
 //             trials, held_trials (over every trial of every grasp)}
 //   parameters also: trials, trial_offset_m, trial_turn_rad, trial_seed
+//   complete: false when the validation was interrupted (SIGINT), with interrupted: "SIGINT";
+//             grasps then holds only those whose every trial finished (json_completeness.h;
+//             absent in older files: true)
 #include <cstdint>
 #include <functional>
 #include <map>

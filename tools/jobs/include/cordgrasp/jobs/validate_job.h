@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "cordgrasp/core/cancel_token.h"
 #include "cordgrasp/core/grasp_perturbation.h"
 #include "cordgrasp/core/hand_description.h"
 #include "cordgrasp/jobs/validate_plan.h"
@@ -49,6 +50,9 @@ struct ValidateJobParams {
   std::string trace_path;
   double trace_interval_s = 0.01;
   std::string out;
+  /// Stop request: no new grasp or trial starts once it is set (those in flight finish); the
+  /// grasps whose every trial finished are written, sim.json marked incomplete.
+  CancelToken cancel;
 };
 
 /// Called with one line per validated grasp ("grasp 0: held (...)"), and with
@@ -59,7 +63,8 @@ struct ValidateJobCallbacks {
 };
 
 /// Validates the plan p.plan as the options say and writes sim.json to p.out (and the trace
-/// and snapshots when asked). Output folders are checked before any simulation.
+/// and snapshots when asked). Output folders are checked before any simulation. When
+/// p.cancel stopped it, the document's `interrupted` is set and the files hold what finished.
 /// @throws InputError naming the file or option.
 SimDocument validate_job(const ValidateJobParams& p, const ValidateJobCallbacks& callbacks = {});
 

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "cordgrasp/core/cancel_token.h"
 #include "cordgrasp/core/grasp_perturbation.h"
 #include "cordgrasp/core/hand_model.h"
 #include "cordgrasp/core/mesh.h"
@@ -38,6 +39,11 @@ struct SimDocument {
   std::vector<std::vector<Outcome>> trial_outcomes;
   PerturbationParams trial_perturbation;
   std::uint64_t trial_seed = 1;
+  int trials = 1;  ///< simulations asked for per grasp (add_perturbed_trials)
+  /// The signal that stopped the validation early ("SIGINT"), "" when it ran to its end; the
+  /// document then holds only the grasps whose every simulation finished.
+  std::string interrupted;
+  int grasps_asked = 0;  ///< grasps the validation was asked for (results: fewer if interrupted)
 };
 
 /// Called after each grasp: (done, total, result).
@@ -50,22 +56,26 @@ using GraspPhaseHooks = std::function<PhaseHook(int grasp_index)>;
 /// `hooks` (optional) sees the world at every phase end of each grasp (snapshots). `jobs`
 /// threads simulate grasps at once, each in its own world: the document does not depend on it;
 /// `progress` is called in grasp order, one call at a time, and a hook of grasp k runs on the
-/// thread simulating k (so it must only touch grasp k's state).
+/// thread simulating k (so it must only touch grasp k's state). Once `cancel` is set no further
+/// grasp starts (those in flight finish); the document keeps the finished ones, with
+/// doc.interrupted set when some were not simulated.
 SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const Mesh& mesh,
                           const SimParams& params, const SimTests& tests, int max_grasps = -1,
                           const ValidateProgress& progress = {},
-                          const GraspPhaseHooks& hooks = {}, int jobs = 1);
+                          const GraspPhaseHooks& hooks = {}, int jobs = 1,
+                          const CancelToken& cancel = {});
 
 /// Held / not-held of a marginal grasp is chaotic (docs/physics.md): validates every grasp of
 /// `doc` `trials` − 1 more times with the hand moved and turned slightly (perturbed_grasp,
 /// seed trial_seed + 1000·k + t for trial t of grasp k) and records all outcomes in
 /// doc.trial_outcomes; `progress` is called after each grasp's trials, in grasp order. `jobs`
-/// threads run the trials (results independent of it).
+/// threads run the trials (results independent of it). Once `cancel` is set no further trial
+/// starts; grasps whose trials did not all run are removed from `doc` and doc.interrupted set.
 /// @throws std::invalid_argument when trials is not in [1, 1000].
 void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const HandModel& hand,
                           const Mesh& mesh, int trials, const PerturbationParams& perturbation,
                           std::uint64_t seed, const ValidateProgress& progress = {},
-                          int jobs = 1);
+                          int jobs = 1, const CancelToken& cancel = {});
 
 /// The closing lines of a validation: "held 2 / 3 (tests lift,shake, mu 0.5) -> OUT", the
 /// failures_line and, with trials, "held in k / N trials of all grasps"; each ends in '\n'.
