@@ -18,6 +18,10 @@ void keep_grasps(SimDocument& doc, const std::vector<char>& keep) {
   size_t to = 0;
   for (size_t k = 0; k < doc.results.size(); ++k) {
     if (!keep[k]) continue;
+    if (to == k) {  // no self-move: it would empty the vectors
+      ++to;
+      continue;
+    }
     doc.results[to] = std::move(doc.results[k]);
     doc.grasps[to] = std::move(doc.grasps[k]);
     doc.grasp_indices[to] = doc.grasp_indices[k];
@@ -119,7 +123,7 @@ void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const Hand
     if (grasp_done) reporter.finished(k);
   });
   std::vector<char> complete(static_cast<size_t>(total), 0);
-  for (int k = 0; k < total; ++k) complete[static_cast<size_t>(k)] = trials_left[static_cast<size_t>(k)] == 0;
+  for (size_t k = 0; k < complete.size(); ++k) complete[k] = trials_left[k] == 0;
   if (std::count(complete.begin(), complete.end(), 0) > 0) {
     keep_grasps(doc, complete);
     doc.interrupted = cancel.reason();
