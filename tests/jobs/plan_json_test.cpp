@@ -114,6 +114,28 @@ TEST(PlanJson, RoundTripsEveryField) {
   std::filesystem::remove(path);
 }
 
+TEST(PlanJson, MarksAnInterruptedPlanIncompleteAndReadsOldFilesAsComplete) {
+  const HandModel hand = load_hand("parallel_gripper");
+  PlanDocument doc = sample_plan(hand);
+  nlohmann::json j = plan_to_json(doc, hand);
+  EXPECT_EQ(j.at("complete"), true);
+  EXPECT_FALSE(j.contains("interrupted"));
+  EXPECT_EQ(plan_from_json(j, hand).interrupted, "");
+  j.erase("complete");  // written before the key existed
+  EXPECT_EQ(plan_from_json(j, hand).interrupted, "");
+
+  doc.interrupted = "SIGINT";
+  j = plan_to_json(doc, hand);
+  EXPECT_EQ(j.at("complete"), false);
+  EXPECT_EQ(j.at("interrupted"), "SIGINT");
+  const PlanDocument back = plan_from_json(j, hand);
+  EXPECT_EQ(back.interrupted, "SIGINT");
+  EXPECT_TRUE(back.stats.interrupted);
+  EXPECT_EQ(back.grasps.size(), doc.grasps.size());
+  j["complete"] = "no";
+  EXPECT_THROW(plan_from_json(j, hand, "plan.json"), InputError);
+}
+
 TEST(PlanJson, RefusesAPlanMadeForAnotherHand) {
   const HandModel gripper = load_hand("parallel_gripper");
   const HandModel sah = load_hand("cordgrasp_sah");

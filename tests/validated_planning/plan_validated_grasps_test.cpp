@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
@@ -14,6 +16,7 @@
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/jobs/plan_json.h"
+#include "cordgrasp/jobs/validate_plan.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
@@ -130,6 +133,52 @@ TEST(GraspsDiffer, ByGcpDistanceOrHandTurn) {
   b.X_OB.linear() = Eigen::AngleAxisd(21.0 * M_PI / 180.0, Eigen::Vector3d::UnitX()).matrix();
   EXPECT_TRUE(grasps_differ(a, b, v));
   EXPECT_NEAR(grasp_pose_distance(a, b).hand_turn_rad, 21.0 * M_PI / 180.0, 1e-12);
+}
+
+TEST(PlanValidatedGrasps, ACancelledPlanStopsBeforeItsNextCandidateAndSaysSo) {
+  const BoxPlan box(2);
+  std::atomic<int> signal{SIGINT};  // asked to stop before it began
+  const PlanDocument plan = plan_validated_grasps(box.job, box.v, SimParams{}, box.mesh,
+                                                  box.object, box.hand, 1, {},
+                                                  CancelToken(&signal));
+  EXPECT_EQ(plan.interrupted, "SIGINT");
+  EXPECT_TRUE(plan.stats.interrupted);
+  EXPECT_TRUE(plan.grasps.empty());
+  EXPECT_EQ(plan.validation->stats.simulated, 0);
+  EXPECT_FALSE(plan.validation->stats.budget_spent);
+  // Not cancelled: the same plan runs to its end.
+  signal = 0;
+  const PlanDocument whole = plan_validated_grasps(box.job, box.v, SimParams{}, box.mesh,
+                                                   box.object, box.hand, 1, {},
+                                                   CancelToken(&signal));
+  EXPECT_EQ(whole.interrupted, "");
+  EXPECT_EQ(whole.grasps.size(), 2u);
+}
+
+TEST(ValidatePlan, ACancelledValidationSimulatesNothingAndIsMarkedIncomplete) {
+  const BoxPlan box(1);
+  const PlanDocument plan = box.plan();
+  ASSERT_EQ(plan.grasps.size(), 1u);
+  std::atomic<int> signal{SIGTERM};
+  SimDocument doc = validate_plan(plan, box.hand, box.mesh, SimParams{}, SimTests{}, -1, {}, {},
+                                  1, CancelToken(&signal));
+  EXPECT_EQ(doc.interrupted, "SIGTERM");
+  EXPECT_TRUE(doc.results.empty());
+  EXPECT_TRUE(doc.grasp_indices.empty());
+  EXPECT_EQ(doc.grasps_asked, 1);
+  // Trials of a document whose grasps all ran, then cancelled: no grasp has every trial.
+  signal = 0;
+  doc = validate_plan(plan, box.hand, box.mesh, SimParams{}, SimTests{}, -1, {}, {}, 1,
+                      CancelToken(&signal));
+  ASSERT_EQ(doc.results.size(), 1u);
+  EXPECT_EQ(doc.interrupted, "");
+  signal = SIGINT;
+  add_perturbed_trials(doc, plan, box.hand, box.mesh, 3, PerturbationParams{}, 1, {}, 1,
+                       CancelToken(&signal));
+  EXPECT_EQ(doc.interrupted, "SIGINT");
+  EXPECT_TRUE(doc.results.empty());
+  EXPECT_TRUE(doc.trial_outcomes.empty());
+  EXPECT_EQ(doc.trials, 3);
 }
 
 TEST(PlanValidatedGrasps, RejectsMinHeldAboveTrials) {
