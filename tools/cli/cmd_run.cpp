@@ -78,7 +78,7 @@ void add_run_command(CLI::App& app) {
     if (!out.report.interrupted.empty()) {
       std::cout << "run: interrupted by " << out.report.interrupted << " during "
                 << out.report.interrupted_at << "; " << opt->run.out_dir
-                << " holds what finished (report.md and the JSON files say so)\n";
+                << " holds what finished (report.md says where it stopped)\n";
       throw Interrupted("interrupted by " + out.report.interrupted);
     }
   });

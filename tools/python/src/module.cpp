@@ -255,6 +255,14 @@ void bind_plan(py::module_& m) {
       .def_readonly("job_wall_s", &PyPlan::job_wall_s,
                     "Wall-clock time of the C++ plan job (0 for a plan read from a file) [s]")
       .def_property_readonly("planner", [](const PyPlan& p) { return p.doc.planner; })
+      .def_property_readonly(
+          "interrupted",
+          [](const PyPlan& p) -> py::object {
+            if (p.doc.interrupted.empty()) return py::none();
+            return py::str(p.doc.interrupted);
+          },
+          "The signal that stopped the planning early ('SIGINT'; plan.json \"complete\": "
+          "false), None for a complete plan (also one from before the key existed).")
       .def_property_readonly("hand", [](const PyPlan& p) { return PyHand{p.hand}; })
       .def_property_readonly("stats", [](const PyPlan& p) {
         return json_to_py(plan_to_json(p.doc, *p.hand)["stats"]);

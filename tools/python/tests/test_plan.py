@@ -107,6 +107,20 @@ def test_plan_json_round_trip(mug, hand, tmp_path):
     np.testing.assert_array_equal(back.grasps[0].hand_pose, plan.grasps[0].hand_pose)
 
 
+def test_read_plan_accepts_complete_incomplete_and_older_plans(mug, hand, tmp_path):
+    doc = cordgrasp.plan(mug, hand, seed=3).to_dict()
+    assert doc["complete"] is True
+    path = tmp_path / "plan.json"
+    for extra, expected in [({}, None), ({"complete": False, "interrupted": "SIGINT"}, "SIGINT")]:
+        written = {k: v for k, v in doc.items() if k not in ("complete", "interrupted")}
+        written.update(extra)  # without the keys: written before they existed
+        path.write_text(json.dumps(written))
+        back = cordgrasp.read_plan(str(path), hand)
+        assert back.interrupted == expected
+        assert len(back.grasps) == len(doc["grasps"])
+        assert back.to_dict()["complete"] is (expected is None)
+
+
 def test_call_overhead_is_small(mug, hand):
     """Wall time of cordgrasp.plan() minus the C++ plan job's, over the plan's total_s."""
     overheads = []
