@@ -14,6 +14,7 @@
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/plan_validated_grasps.h"
+#include "cordgrasp/jobs/render_options.h"
 #include "validation_options.h"
 
 namespace cordgrasp::cli {
@@ -80,6 +81,7 @@ void print_summary(const PlanDocument& doc, const HandModel& hand, const std::st
 }
 
 void run_plan(const PlanOptions& opt) {
+  check_output_file(opt.out);  // before minutes of planning, not after
   const std::string object_path = resolve_object_path(opt.object);
   const Mesh mesh = load_job_mesh(opt.job, object_path);
   const HandModel hand = load_hand(opt.hand, opt.hand_load);
@@ -118,6 +120,7 @@ void add_plan_command(CLI::App& app) {
                 "until --grasps are accepted or --budget is spent)");
   cmd->add_option("--tests", opt->validation.tests,
                   "--validate: physics tests, any of lift,shake,gravity6")
+      ->check(physics_tests(false))
       ->capture_default_str();
   add_enum_option(cmd, "--protocol", &opt->validation.protocol,
                   "--validate: physics protocol, quick or thorough");

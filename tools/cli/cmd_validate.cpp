@@ -37,6 +37,7 @@ void add_validate_command(CLI::App& app) {
          "Scale of --object after --units (default: the plan's)")
       ->check(number_in(1e-6, 1000.0));
   cmd->add_option("--tests", opt->job.tests, "Tests to run after closing: lift,shake,gravity6")
+      ->check(physics_tests(false))
       ->capture_default_str();
   add_enum_option(cmd, "--protocol", &opt->job.protocol,
                   "Phase durations and early exits: quick, or thorough (long phases, no early "

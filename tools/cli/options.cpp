@@ -5,6 +5,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
+
+#include "cordgrasp/sim/validate_grasp.h"
 
 namespace cordgrasp::cli {
 namespace {
@@ -72,6 +75,22 @@ CLI::Validator seed_value() {
         char* end = nullptr;
         (void)std::strtoull(text.c_str(), &end, 10);
         if (errno == ERANGE || *end != '\0') return text + " is not " + rule;
+        return std::string();
+      },
+      rule);
+}
+
+CLI::Validator physics_tests(bool allow_none) {
+  const std::string rule = std::string("a comma list of lift, shake, gravity6") +
+                           (allow_none ? ", or none" : " (at least one)");
+  return CLI::Validator(
+      [allow_none, rule](std::string& text) {
+        if (allow_none && text == "none") return std::string();
+        try {
+          (void)sim_tests_from_string(text);
+        } catch (const std::invalid_argument&) {
+          return text + " is not " + rule;
+        }
         return std::string();
       },
       rule);

@@ -44,6 +44,10 @@ CLI::Validator whole_number_at_least(long long lo);
 /// Accepts a seed: a whole number in [0, 2^64 − 1] written as digits (no sign, no exponent).
 CLI::Validator seed_value();
 
+/// Accepts physics tests "lift,shake,gravity6" (any non-empty subset), and "none" when
+/// `allow_none`; refusals read "none is not a comma list of lift, shake, gravity6 (...)".
+CLI::Validator physics_tests(bool allow_none);
+
 /// Adds --scale (a uniform object scale after --units, in (0, 1000]) bound to `*scale`.
 CLI::Option* add_scale_option(CLI::App* cmd, double* scale, const std::string& extra_help = "");
 
