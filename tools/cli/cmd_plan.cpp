@@ -128,7 +128,7 @@ void add_plan_command(CLI::App& app) {
   add_object_mass_options(cmd, opt->mass_kg, opt->density_kgm3);
   cmd->add_option("--jobs,-j", opt->jobs,
                   "--validate: trials simulated at once, one physics world per thread")
-      ->check(CLI::Range(1, 256))
+      ->check(whole_number_in(1, 256))
       ->capture_default_str();
   cmd->add_option("--out", opt->out, "Output plan.json")->required();
   cmd->add_flag("--quiet,-q", opt->quiet, "No summary on stdout (warnings and errors only)");

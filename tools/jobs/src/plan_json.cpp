@@ -106,7 +106,7 @@ Eigen::Isometry3d pose_from_json(const nlohmann::json& j, const std::string& whe
   for (int i = 0; i < 4; ++i)
     wxyz[i] = finite_number(q[static_cast<size_t>(i)], qw + "[" + std::to_string(i) + "]");
   if (std::abs(wxyz.norm() - 1.0) > kUnitQuaternionTol)
-    throw InputError(qw + ": not a unit quaternion (norm " + std::to_string(wxyz.norm()) + ")");
+    throw InputError(qw + ": not a unit quaternion (norm " + format_number(wxyz.norm()) + ")");
   const Eigen::Quaterniond quat(wxyz[0], wxyz[1], wxyz[2], wxyz[3]);
   Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
   X.linear() = quat.normalized().toRotationMatrix();
