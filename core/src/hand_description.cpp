@@ -131,7 +131,12 @@ void read_gcp(HandModel& hand, const Description& d) {
   hand.gcp.link = find_link(hand, link);
   if (hand.gcp.link < 0)
     d.error(gcp["link"], "GCP link " + in_quotes(link) + " not found in the URDF");
-  hand.gcp.X_LG = from_xyz_rpy(d.vec3(gcp["xyz"], "gcp.xyz"), d.vec3(gcp["rpy"], "gcp.rpy"));
+  // A hand is centimetres across: an offset past a metre is a unit mistake or garbage.
+  constexpr double kMaxGcpOffset_m = 1.0;
+  const Eigen::Vector3d xyz = d.vec3(gcp["xyz"], "gcp.xyz");
+  if (xyz.cwiseAbs().maxCoeff() > kMaxGcpOffset_m)
+    d.error(gcp["xyz"], "gcp.xyz is farther than 1 m from the link (metres, not millimetres)");
+  hand.gcp.X_LG = from_xyz_rpy(xyz, d.vec3(gcp["rpy"], "gcp.rpy"));
   for (const auto& kv : gcp) {
     const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
     if (key != "link" && key != "xyz" && key != "rpy")

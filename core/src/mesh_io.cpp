@@ -5,13 +5,17 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <map>
+#include <mutex>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
@@ -93,6 +97,55 @@ struct SoupBuilder {
 /// within the precision of assimp's float coordinates (2^-23 ≈ 1.2e-7).
 constexpr double kDegenerateAltitudeRel = 1e-7;
 
+/// Assimp's file system confined to the mesh's own folder: a reference to a file elsewhere
+/// (an OBJ's `mtllib ../../etc/passwd`, a glTF buffer `../x.bin`) is not opened. Only geometry
+/// is read, so a refused material file costs nothing (assimp falls back to no materials); a
+/// refused glTF buffer fails the load with assimp's message. A symlink is followed to where
+/// it points, and refused if that is elsewhere. Each refused file is named once on stderr.
+class MeshFolderIOSystem : public Assimp::DefaultIOSystem {
+ public:
+  explicit MeshFolderIOSystem(const std::string& mesh_path)
+      : self_(resolved(mesh_path)), folder_(resolved(fs::absolute(mesh_path).parent_path())) {}
+
+  bool Exists(const char* file) const override {
+    return allowed(file) && Assimp::DefaultIOSystem::Exists(file);
+  }
+  Assimp::IOStream* Open(const char* file, const char* mode) override {
+    return allowed(file) ? Assimp::DefaultIOSystem::Open(file, mode) : nullptr;
+  }
+  /// Files asked for and refused, in first-asked order.
+  const std::vector<std::string>& refused() const { return refused_; }
+
+ private:
+  static fs::path resolved(const fs::path& p) {
+    std::error_code ec;
+    const fs::path r = fs::weakly_canonical(fs::absolute(p, ec), ec);
+    return ec ? fs::path() : r;
+  }
+  bool allowed(const char* file) const {
+    const fs::path p = resolved(file);
+    const fs::path rel = folder_.empty() ? fs::path() : p.lexically_relative(folder_);
+    if (!p.empty() && (p == self_ || (!rel.empty() && *rel.begin() != "..")))
+      return true;
+    if (std::find(refused_.begin(), refused_.end(), file) == refused_.end())
+      refused_.emplace_back(file);
+    return false;
+  }
+  fs::path self_, folder_;
+  mutable std::vector<std::string> refused_;
+};
+
+/// "cordgrasp: warning: ..." naming the first refused file (assimp asks for variants of one
+/// name), once per mesh file for the whole process.
+void warn_refused_files(const std::string& path, const std::vector<std::string>& refused) {
+  static std::mutex mutex;
+  static std::set<std::string> warned;
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (refused.empty() || !warned.insert(path).second) return;
+  std::cerr << "cordgrasp: warning: load_mesh: '" << path << "': not opening '" << refused[0]
+            << "': outside the mesh's folder (only geometry is read)\n";
+}
+
 std::string point_text(const Eigen::Vector3d& p) {
   std::ostringstream out;
   out << '(' << p.x() << ", " << p.y() << ", " << p.z() << ')';
@@ -118,7 +171,10 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
     fail(path, "unknown mesh format '" + ext + "' (use OBJ, STL, PLY, OFF, DAE or glTF)");
   // Collada: keep node transforms and <unit>, drop the up-axis rotation (ROS/RViz semantics).
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+  auto* io = new MeshFolderIOSystem(path);
+  importer.SetIOHandler(io);  // the importer owns it
   const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate);
+  warn_refused_files(path, io->refused());
   if (!scene || !scene->mRootNode)
     fail(path, std::string("cannot parse: ") + importer.GetErrorString());
 

@@ -153,7 +153,8 @@ TEST(CliRender, PlanGraspsMayCarryTheirRegion) {
   std::ofstream(plan) << j.dump();
   r = test::run_cordgrasp("render --plan " + quoted(plan) + " --size 80x60 --out " + quoted(out));
   EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.output.find("grasp 0: region: missing field 'front_cords'"), std::string::npos)
+  EXPECT_NE(r.output.find("grasps[0].region: region: missing field 'front_cords'"),
+            std::string::npos)
       << r.output;
 }
 

@@ -17,9 +17,10 @@ namespace cordgrasp::test {
 struct TempDir {
   std::filesystem::path path;
   TempDir() {
+    std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    std::replace(name.begin(), name.end(), '/', '_');  // parameterized: "Case/id"
     path = std::filesystem::temp_directory_path() /
-           ("cordgrasp_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+           ("cordgrasp_test_" + std::to_string(::getpid()) + "_" + name);
     std::filesystem::remove_all(path);
     std::filesystem::create_directories(path);
   }

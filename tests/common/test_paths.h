@@ -2,12 +2,17 @@
 // Paths and helpers shared by the test executables.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -53,6 +58,54 @@ inline CommandResult run_cordgrasp(const std::string& args) {
   while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.output.append(buf.data(), n);
   const int status = pclose(pipe);
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+/// How a cordgrasp process ended and what it printed, stdout and stderr apart.
+struct ProcessResult {
+  bool exited = false;    ///< WIFEXITED: it returned or called exit()
+  int exit_code = -1;     ///< WEXITSTATUS when exited
+  bool signaled = false;  ///< WIFSIGNALED: a signal ended it (a crash, an abort)
+  int signal = 0;         ///< WTERMSIG when signaled
+  std::string out, err;
+};
+
+/// Runs the cordgrasp executable with `args` (no shell: each string is one argument) in the
+/// working directory `cwd`, stdout and stderr going to files in `capture_dir`.
+inline ProcessResult run_cordgrasp_argv(const std::vector<std::string>& args,
+                                        const std::string& cwd, const std::string& capture_dir) {
+  const std::string out_path = capture_dir + "/stdout", err_path = capture_dir + "/stderr";
+  std::vector<std::string> argv_text = {CORDGRASP_EXE};
+  argv_text.insert(argv_text.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : argv_text) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  ProcessResult r;
+  const pid_t pid = ::fork();
+  if (pid == 0) {  // child: only async-signal-safe calls until exec
+    const int out = ::open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (out < 0 || err < 0 || ::dup2(out, 1) < 0 || ::dup2(err, 2) < 0 || ::chdir(cwd.c_str()))
+      ::_exit(127);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  if (pid < 0) return r;
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  r.exited = WIFEXITED(status);
+  r.exit_code = r.exited ? WEXITSTATUS(status) : -1;
+  r.signaled = WIFSIGNALED(status);
+  r.signal = r.signaled ? WTERMSIG(status) : 0;
+  const auto slurp = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  r.out = slurp(out_path);
+  r.err = slurp(err_path);
   return r;
 }
 

@@ -1,8 +1,15 @@
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <array>
+#include <atomic>
+#include <chrono>
+#include <fstream>
+#include <thread>
 #include <string>
 #include <vector>
 
@@ -11,6 +18,7 @@
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/mesh_topology.h"
 #include "cordgrasp/core/mesh_volume.h"
+#include "test_files.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
@@ -56,6 +64,48 @@ TEST(LoadMesh, EveryBadInputFileGivesOneLineNamingFileAndProblem) {
     EXPECT_NE(msg.find(c.problem), std::string::npos) << msg;
     EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
   }
+}
+
+// `mtllib ../secret.mtl` names a FIFO outside the mesh's folder: opening it would block until a
+// writer comes. A guard thread plays the writer (a non-blocking open for writing succeeds only
+// while someone has the FIFO open for reading), so an opened FIFO is seen, not a hang.
+TEST(LoadMesh, MaterialFilesOutsideTheMeshFolderAreNotOpenedAndTheGeometryLoads) {
+  const test::TempDir dir;
+  std::filesystem::create_directories(dir.path / "mesh");
+  const std::string fifo = dir.file("secret.mtl"), obj = dir.file("mesh/escape.obj");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::ofstream(obj) << "mtllib ../secret.mtl\nv 0 0 0\nv 0.1 0 0\nv 0 0.1 0\nv 0 0 0.1\n"
+                        "usemtl secret\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  std::atomic<bool> done{false}, opened{false};
+  std::thread writer([&] {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (!done && std::chrono::steady_clock::now() < until) {
+      const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+      if (fd >= 0) {  // a reader has it open: let it read an empty file
+        opened = true;
+        ::close(fd);
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  });
+  ::testing::internal::CaptureStderr();
+  Mesh mesh;
+  EXPECT_NO_THROW(mesh = load_mesh(obj));
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  done = true;
+  writer.join();
+  EXPECT_FALSE(opened) << "load_mesh opened " << fifo;
+  EXPECT_EQ(mesh.triangles.size(), 4u);
+  EXPECT_NE(err.find("not opening '"), std::string::npos) << err;
+  EXPECT_NE(err.find("secret.mtl': outside the mesh's folder"), std::string::npos) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+}
+
+TEST(LoadMesh, MaterialFilesBesideTheMeshAreReadWithoutAWarning) {
+  ::testing::internal::CaptureStderr();
+  const Mesh mesh = load_mesh(test::test_data("robustness/meshes/mtllib/inside.obj"));
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+  EXPECT_EQ(mesh.triangles.size(), 12u);
 }
 
 TEST(LoadMesh, DirectoryIsRejected) {

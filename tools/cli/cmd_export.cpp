@@ -18,7 +18,7 @@ void add_export_command(CLI::App& app) {
          "--format", [opt](const std::string& t) { opt->format = parse_export_format(t); },
          "mjcf (MuJoCo scene, one keyframe per grasp), moveit (moveit_msgs/Grasp list), glb "
          "or obj (one mesh file per grasp)")
-      ->check(CLI::IsMember({"mjcf", "moveit", "glb", "obj"}))
+      ->check(one_of({"mjcf", "moveit", "glb", "obj"}))
       ->required();
   cmd->add_option("--out", opt->out,
                   "mjcf, moveit: the file to write; glb, obj: a folder for grasp_K.<ext>")

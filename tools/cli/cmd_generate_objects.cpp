@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "options.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/mesh_properties.h"
@@ -48,7 +49,7 @@ void add_generate_objects_command(CLI::App& app) {
       "generate-objects", "Write the shipped test objects (box, mug, pliers...) as OBJ in meters");
   cmd->add_option("--out-dir", opt->out_dir, "Directory to write <name>.obj into")->required();
   cmd->add_option("--only", opt->only, "Only these objects (default: all)")
-      ->check(CLI::IsMember(shipped_object_names()));
+      ->check(one_of(shipped_object_names()));
   cmd->callback([opt]() { run_generate_objects(*opt); });
 }
 

@@ -29,7 +29,7 @@ void add_info_command(CLI::App& app) {
                   "Hand description (YAML) or the name of a shipped hand, e.g. cordgrasp_sah");
   add_package_path_option(cmd, opt->hand_load);
   cmd->add_option("--units", opt->units, "Units of the object file: m, mm or auto")
-      ->check(CLI::IsMember({"m", "mm", "auto"}))
+      ->check(one_of({"m", "mm", "auto"}))
       ->capture_default_str();
   add_scale_option(cmd, &opt->scale);
   cmd->add_flag("--json", opt->json, "Print machine-readable JSON instead of text");

@@ -14,6 +14,7 @@
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/plan_validated_grasps.h"
+#include "cordgrasp/jobs/render_options.h"
 #include "validation_options.h"
 
 namespace cordgrasp::cli {
@@ -80,6 +81,7 @@ void print_summary(const PlanDocument& doc, const HandModel& hand, const std::st
 }
 
 void run_plan(const PlanOptions& opt) {
+  check_output_file(opt.out);  // before minutes of planning, not after
   install_interrupt_handlers();
   const CancelToken cancel = interrupt_token();
   const std::string object_path = resolve_object_path(opt.object);
@@ -127,6 +129,7 @@ void add_plan_command(CLI::App& app) {
                 "until --grasps are accepted or --budget is spent)");
   cmd->add_option("--tests", opt->validation.tests,
                   "--validate: physics tests, any of lift,shake,gravity6")
+      ->check(physics_tests(false))
       ->capture_default_str();
   add_enum_option(cmd, "--protocol", &opt->validation.protocol,
                   "--validate: physics protocol, quick or thorough");
@@ -134,7 +137,7 @@ void add_plan_command(CLI::App& app) {
   add_object_mass_options(cmd, opt->mass_kg, opt->density_kgm3);
   cmd->add_option("--jobs,-j", opt->jobs,
                   "--validate: trials simulated at once, one physics world per thread")
-      ->check(CLI::Range(1, 256))
+      ->check(whole_number_in(1, 256))
       ->capture_default_str();
   cmd->add_option("--out", opt->out, "Output plan.json")->required();
   cmd->add_flag("--quiet,-q", opt->quiet, "No summary on stdout (warnings and errors only)");

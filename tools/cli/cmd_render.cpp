@@ -46,7 +46,7 @@ void add_render_command(CLI::App& app) {
                   "With --plan or --regions: the first N as a contact sheet, --size per tile")
       ->check(whole_number_at_least(1));
   cmd->add_option("--units", opt->units, "Units of the object file: m, mm or auto")
-      ->check(CLI::IsMember({"m", "mm", "auto"}))
+      ->check(one_of({"m", "mm", "auto"}))
       ->capture_default_str();
   add_scale_option(cmd, &opt->scale, " (a plan is drawn at its own scale)");
   add_picture_options(*cmd, opt->picture);

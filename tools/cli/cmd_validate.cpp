@@ -32,12 +32,13 @@ void add_validate_command(CLI::App& app) {
                   "Object mesh file or shipped object name (default: the plan's); another "
                   "object is an error");
   cmd->add_option("--units", opt->job.units, "Units of --object: m, mm or auto (default: the plan's)")
-      ->check(CLI::IsMember({"m", "mm", "auto"}));
+      ->check(one_of({"m", "mm", "auto"}));
   cmd->add_option_function<double>(
          "--scale", [opt](double s) { opt->job.scale = s; },
          "Scale of --object after --units (default: the plan's)")
       ->check(number_in(1e-6, 1000.0));
   cmd->add_option("--tests", opt->job.tests, "Tests to run after closing: lift,shake,gravity6")
+      ->check(physics_tests(false))
       ->capture_default_str();
   add_enum_option(cmd, "--protocol", &opt->job.protocol,
                   "Phase durations and early exits: quick, or thorough (long phases, no early "
@@ -51,7 +52,7 @@ void add_validate_command(CLI::App& app) {
       ->check(number_in(1.0, 1e5));
   cmd->add_option("--object-shape", opt->job.object_shape,
                   "Object collision shape: auto, hull, decomposition, gimpact")
-      ->check(CLI::IsMember({"auto", "hull", "decomposition", "gimpact"}))
+      ->check(one_of({"auto", "hull", "decomposition", "gimpact"}))
       ->capture_default_str();
   cmd->add_option("--cache-dir", opt->job.cache_dir,
                   "Directory caching convex decompositions on disk (by mesh hash)");
@@ -80,7 +81,7 @@ void add_validate_command(CLI::App& app) {
                               "effort) or 'contacts' (the joints press the planned contacts "
                               "along their normals with one common force) (default ") +
                       to_string(defaults.squeeze_direction) + ")")
-      ->check(CLI::IsMember({"actor", "contacts"}));
+      ->check(one_of({"actor", "contacts"}));
   cmd->add_option("--effort-scale", opt->job.effort_scale,
                   "Multiply every joint effort limit (e.g. 0.5 for weaker motors)")
       ->check(number_in(1e-3, 100.0));

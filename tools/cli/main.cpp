@@ -57,6 +57,11 @@ int main(int argc, char** argv) {
                                         sim_backend_version() + "\n  " +
                                         render_backend_version());
   app.require_subcommand(1);
+  // Refusals are one line on stderr ("--mu: nan is not a finite number in [0, 10]"), without
+  // CLI11's "Run with --help" footer.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return std::string(e.what()) + '\n';
+  });
   app.fallthrough();
   cli::add_run_command(app);
   cli::add_info_command(app);

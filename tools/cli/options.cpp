@@ -1,10 +1,14 @@
 #include "options.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
+
+#include "cordgrasp/sim/validate_grasp.h"
 
 namespace cordgrasp::cli {
 namespace {
@@ -77,6 +81,45 @@ CLI::Validator seed_value() {
       rule);
 }
 
+CLI::Validator one_of(const std::vector<std::string>& names) {
+  std::string rule = "one of ", braces = "{";
+  for (size_t i = 0; i < names.size(); ++i) {
+    rule += (i ? ", " : "") + names[i];
+    braces += (i ? "," : "") + names[i];
+  }
+  return CLI::Validator(
+      [names, rule](std::string& text) {
+        if (std::find(names.begin(), names.end(), text) != names.end()) return std::string();
+        return text + " is not " + rule;
+      },
+      braces + "}");
+}
+
+std::string enum_refusal(const std::string& text, const std::string& parse_error) {
+  // parse_error reads "units: unknown name 'cm' (allowed: m, mm, auto)".
+  const std::string key = "(allowed: ";
+  const size_t at = parse_error.find(key), end = parse_error.rfind(')');
+  if (at == std::string::npos || end == std::string::npos || end < at + key.size())
+    return text + " is not a known name (" + parse_error + ")";
+  return text + " is not one of " + parse_error.substr(at + key.size(), end - at - key.size());
+}
+
+CLI::Validator physics_tests(bool allow_none) {
+  const std::string rule = std::string("a comma list of lift, shake, gravity6") +
+                           (allow_none ? ", or none" : " (at least one)");
+  return CLI::Validator(
+      [allow_none, rule](std::string& text) {
+        if (allow_none && text == "none") return std::string();
+        try {
+          (void)sim_tests_from_string(text);
+        } catch (const std::invalid_argument&) {
+          return text + " is not " + rule;
+        }
+        return std::string();
+      },
+      rule);
+}
+
 CLI::Option* add_scale_option(CLI::App* cmd, double* scale, const std::string& extra_help) {
   return cmd
       ->add_option("--scale", *scale,
@@ -88,7 +131,7 @@ CLI::Option* add_scale_option(CLI::App* cmd, double* scale, const std::string& e
 
 void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
   cmd->add_option("--planner", p.planner, "cord (Li et al. 2015) or generic (Simox baseline)")
-      ->check(CLI::IsMember({"cord", "generic"}))
+      ->check(one_of({"cord", "generic"}))
       ->capture_default_str();
   cmd->add_option("--grasps,-n", p.plan.grasps, "Stop after this many force-closure grasps")
       ->check(whole_number_in(1, 10000))
@@ -162,7 +205,7 @@ void add_picture_options(CLI::App& cmd, PictureOptions& o) {
   cmd.add_option("--view", o.view,
                      "Viewpoint: iso, front, side, top or approach (default: iso; approach for "
                      "--regions)")
-      ->check(CLI::IsMember({"iso", "front", "side", "top", "approach"}));
+      ->check(one_of({"iso", "front", "side", "top", "approach"}));
   cmd.add_option("--approach", o.approach,
                  "Viewing direction x,y,z for --view approach (default: the grasp's approach)");
   cmd.add_option("--size", o.size, "Image size WxH in pixels")->capture_default_str();
@@ -170,7 +213,7 @@ void add_picture_options(CLI::App& cmd, PictureOptions& o) {
       ->check(whole_number_in(1, 4))
       ->capture_default_str();
   cmd.add_option("--ground", o.ground, "Under the scene: shadow, grid or none")
-      ->check(CLI::IsMember({"shadow", "grid", "none"}))
+      ->check(one_of({"shadow", "grid", "none"}))
       ->capture_default_str();
   cmd.add_option("--caption", o.caption, "Caption text instead of the default one");
   cmd.add_flag("--no-caption", o.no_caption, "No caption line");

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cordgrasp/core/hand_description.h"
 #include "cordgrasp/jobs/parse_name.h"
@@ -10,6 +11,9 @@
 #include "cordgrasp/jobs/render_options.h"
 
 namespace cordgrasp::cli {
+
+/// "cm is not one of m, mm, auto" from a parse_name refusal of `text`.
+std::string enum_refusal(const std::string& text, const std::string& parse_error);
 
 /// An option naming an enumerator of `*field` (its to_string names; parse_name rejects others),
 /// with the field's current value as the default shown by --help.
@@ -24,7 +28,7 @@ CLI::Option* add_enum_option(CLI::App* cmd, const std::string& name, E* field,
         try {
           parse_name(text, &value);
         } catch (const std::invalid_argument& e) {
-          return std::string(e.what());
+          return enum_refusal(text, e.what());
         }
         return std::string();
       })
@@ -35,6 +39,9 @@ CLI::Option* add_enum_option(CLI::App* cmd, const std::string& name, E* field,
 /// [0, 10]" (CLI11 puts the option's name first).
 CLI::Validator number_in(double lo, double hi);
 
+/// Accepts one of `names`; refusals read "--planner: x is not one of cord, generic".
+CLI::Validator one_of(const std::vector<std::string>& names);
+
 /// Accepts whole numbers in [lo, hi], written as digits (no "1e3", no "2.5").
 CLI::Validator whole_number_in(long long lo, long long hi);
 
@@ -43,6 +50,10 @@ CLI::Validator whole_number_at_least(long long lo);
 
 /// Accepts a seed: a whole number in [0, 2^64 − 1] written as digits (no sign, no exponent).
 CLI::Validator seed_value();
+
+/// Accepts physics tests "lift,shake,gravity6" (any non-empty subset), and "none" when
+/// `allow_none`; refusals read "none is not a comma list of lift, shake, gravity6 (...)".
+CLI::Validator physics_tests(bool allow_none);
 
 /// Adds --scale (a uniform object scale after --units, in (0, 1000]) bound to `*scale`.
 CLI::Option* add_scale_option(CLI::App* cmd, double* scale, const std::string& extra_help = "");

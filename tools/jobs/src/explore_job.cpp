@@ -8,11 +8,13 @@
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/palm_width.h"
 #include "cordgrasp/jobs/region_json.h"
+#include "cordgrasp/jobs/render_options.h"
 
 namespace cordgrasp {
 
 ExploreOutcome explore_job(const ExploreJobParams& opt) {
   ExploreOutcome out;
+  if (!opt.json_path.empty()) check_output_file(opt.json_path);  // before exploring
   MeshLoadOptions load;
   load.units = opt.units;
   load.scale = opt.scale;

@@ -48,14 +48,50 @@ double finite_number(const nlohmann::json& j, const std::string& where) {
   return v;
 }
 
+/// j[key], which must be present, or InputError naming where.key.
+const nlohmann::json& member(const nlohmann::json& j, const char* key, const std::string& where) {
+  if (!j.is_object()) throw InputError(where + ": expected a JSON object");
+  if (!j.contains(key)) throw InputError(where + "." + key + ": missing");
+  return j.at(key);
+}
+
+/// j[key] as a finite number, `fallback` when absent (null is not absent: NaN is written so).
+double optional_number(const nlohmann::json& j, const char* key, double fallback,
+                       const std::string& where) {
+  return j.contains(key) ? finite_number(j.at(key), where + "." + key) : fallback;
+}
+
+/// j[key] as true/false, `fallback` when absent.
+bool optional_bool(const nlohmann::json& j, const char* key, bool fallback,
+                   const std::string& where) {
+  if (!j.contains(key)) return fallback;
+  if (!j.at(key).is_boolean()) throw InputError(where + "." + key + ": not true or false");
+  return j.at(key).get<bool>();
+}
+
+/// j[key] as a string, which must be present.
+std::string string_member(const nlohmann::json& j, const char* key, const std::string& where) {
+  const nlohmann::json& v = member(j, key, where);
+  if (!v.is_string()) throw InputError(where + "." + key + ": not a string");
+  return v.get<std::string>();
+}
+
+/// j[key], which must be a JSON array.
+const nlohmann::json& array_member(const nlohmann::json& j, const char* key,
+                                   const std::string& where) {
+  const nlohmann::json& v = member(j, key, where);
+  if (!v.is_array()) throw InputError(where + "." + key + ": expected a JSON array");
+  return v;
+}
+
 Eigen::Vector3d point_from_json(const nlohmann::json& j, const std::string& where) {
   if (!j.is_array() || j.size() != 3) throw InputError(where + ": expected [x, y, z]");
   Eigen::Vector3d p;
   for (int i = 0; i < 3; ++i) {
     p[i] = finite_number(j[static_cast<size_t>(i)], where + "[" + std::to_string(i) + "]");
     if (std::abs(p[i]) > kMaxPlanCoordinate_m)
-      throw InputError(where + ": " + std::to_string(p[i]) + " m is farther than " +
-                       std::to_string(static_cast<int>(kMaxPlanCoordinate_m)) + " m");
+      throw InputError(where + ": " + format_number(p[i]) + " m is farther than " +
+                       format_number(kMaxPlanCoordinate_m) + " m");
   }
   return p;
 }
@@ -71,7 +107,7 @@ Eigen::Isometry3d pose_from_json(const nlohmann::json& j, const std::string& whe
   for (int i = 0; i < 4; ++i)
     wxyz[i] = finite_number(q[static_cast<size_t>(i)], qw + "[" + std::to_string(i) + "]");
   if (std::abs(wxyz.norm() - 1.0) > kUnitQuaternionTol)
-    throw InputError(qw + ": not a unit quaternion (norm " + std::to_string(wxyz.norm()) + ")");
+    throw InputError(qw + ": not a unit quaternion (norm " + format_number(wxyz.norm()) + ")");
   const Eigen::Quaterniond quat(wxyz[0], wxyz[1], wxyz[2], wxyz[3]);
   Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
   X.linear() = quat.normalized().toRotationMatrix();
@@ -98,20 +134,22 @@ nlohmann::json joints_json(const HandModel& hand, const Eigen::VectorXd& q) {
   return out;
 }
 
+/// Joint values by name; `where` is the JSON path with the file, e.g. "p.json: grasps[0].joints".
 Eigen::VectorXd joints_from_json(const HandModel& hand, const nlohmann::json& j,
-                                 const std::string& what) {
+                                 const std::string& where) {
   Eigen::VectorXd q = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(hand.joints.size()));
+  if (!j.is_object()) throw InputError(where + ": expected {joint name: value}");
   for (const auto& [name, value] : j.items()) {
     const int index = find_joint(hand, name);
     if (index < 0)
-      throw InputError("plan: " + what + " names joint '" + name + "' that hand '" + hand.name +
+      throw InputError(where + ": names joint '" + name + "' that hand '" + hand.name +
                        "' does not have");
-    const double v = finite_number(value, "plan: " + what + "." + name);
+    const double v = finite_number(value, where + "." + name);
     const Joint& joint = hand.joints[static_cast<size_t>(index)];
     if (v < joint.lower - kJointLimitTol || v > joint.upper + kJointLimitTol)
-      throw InputError("plan: " + what + "." + name + ": " + std::to_string(v) +
-                       " is outside the joint's limits [" + std::to_string(joint.lower) + ", " +
-                       std::to_string(joint.upper) + "]");
+      throw InputError(where + "." + name + ": " + format_number(v) +
+                       " is outside the joint's limits [" + format_number(joint.lower) + ", " +
+                       format_number(joint.upper) + "]");
     q[index] = v;
   }
   return q;
@@ -319,42 +357,51 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
           throw InputError(source + ": validation: unknown key '" + item.key() + "'");
       p.validation = record;
     }
+    if (!j.contains("grasps") || !j.at("grasps").is_array())
+      throw InputError(source + ": grasps: " +
+                       (j.contains("grasps") ? "expected a JSON array" : "missing"));
     for (const auto& g : j.at("grasps")) {
       Grasp grasp;
       const std::string where = source + ": grasps[" + std::to_string(p.grasps.size()) + "]";
-      grasp.X_OB = pose_from_json(g.at("hand_pose"), where + ".hand_pose");
-      grasp.X_OG = pose_from_json(g.at("gcp_pose"), where + ".gcp_pose");
-      grasp.q = joints_from_json(hand, g.at("joints"), "joints");
-      grasp.q_preshape = joints_from_json(
-          hand, g.value("preshape_joints", nlohmann::json::object()), "preshape_joints");
-      for (const auto& c : g.at("contacts")) {
+      if (!g.is_object()) throw InputError(where + ": expected a JSON object");
+      grasp.X_OB = pose_from_json(member(g, "hand_pose", where), where + ".hand_pose");
+      grasp.X_OG = pose_from_json(member(g, "gcp_pose", where), where + ".gcp_pose");
+      grasp.q = joints_from_json(hand, member(g, "joints", where), where + ".joints");
+      grasp.q_preshape =
+          joints_from_json(hand, g.value("preshape_joints", nlohmann::json::object()),
+                           where + ".preshape_joints");
+      const nlohmann::json& contacts = array_member(g, "contacts", where);
+      for (size_t k = 0; k < contacts.size(); ++k) {
+        const nlohmann::json& c = contacts[k];
+        const std::string at = where + ".contacts[" + std::to_string(k) + "]";
         Contact contact;
-        const std::string link = c.at("link").get<std::string>();
+        const std::string link = string_member(c, "link", at);
         contact.link = find_link(hand, link);
         if (contact.link < 0)
-          throw InputError(source + ": contact names link '" + link + "' that hand '" + hand.name +
+          throw InputError(at + ".link: names link '" + link + "' that hand '" + hand.name +
                            "' does not have");
-        contact.p_O = point_from_json(c.at("point_m"), where + ".contacts.point_m");
-        contact.n_O = point_from_json(c.at("normal"), where + ".contacts.normal");
+        contact.p_O = point_from_json(member(c, "point_m", at), at + ".point_m");
+        contact.n_O = point_from_json(member(c, "normal", at), at + ".normal");
         grasp.contacts.push_back(contact);
       }
-      grasp.force_closure = g.value("force_closure", false);
-      grasp.epsilon = g.value("epsilon", 0.0);
-      grasp.alpha_rad = g.value("alpha_rad", 0.0);
+      grasp.force_closure = optional_bool(g, "force_closure", false, where);
+      grasp.epsilon = optional_number(g, "epsilon", 0.0, where);
+      grasp.alpha_rad = optional_number(g, "alpha_rad", 0.0, where);
       // Plans written before the palm normal existed hold one α, of the GCP z axis.
       grasp.alpha_approach_rad =
-          g.contains("alpha_approach_rad")
-              ? finite_number(g.at("alpha_approach_rad"), where + ".alpha_approach_rad")
-              : grasp.alpha_rad;
-      if (g.contains("chi_m2") && !g["chi_m2"].is_null()) grasp.chi_m2 = g["chi_m2"].get<double>();
-      if (g.contains("region_rank") && !g["region_rank"].is_null())
+          optional_number(g, "alpha_approach_rad", grasp.alpha_rad, where);
+      if (g.contains("chi_m2") && !g["chi_m2"].is_null())
+        grasp.chi_m2 = finite_number(g["chi_m2"], where + ".chi_m2");
+      if (g.contains("region_rank") && !g["region_rank"].is_null()) {
+        if (!g["region_rank"].is_number_integer())
+          throw InputError(where + ".region_rank: not a whole number");
         grasp.region_rank = g["region_rank"].get<int>();
+      }
       if (g.contains("region") && !g["region"].is_null()) {
         try {
           grasp.region = region_from_json(g["region"]);
         } catch (const InputError& e) {
-          throw InputError(source + ": grasp " + std::to_string(p.grasps.size()) + ": " +
-                           e.what());
+          throw InputError(where + ".region: " + e.what());
         }
       }
       if (p.validation) {
@@ -368,9 +415,10 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
         throw InputError(where + ".validation: given, but the plan has no top-level validation");
       }
       const auto t = g.value("timings_s", nlohmann::json::object());
-      grasp.times.exploration_s = t.value("exploration", 0.0);
-      grasp.times.finger_s = t.value("finger", 0.0);
-      grasp.times.quality_s = t.value("quality", 0.0);
+      if (!t.is_object()) throw InputError(where + ".timings_s: expected a JSON object");
+      grasp.times.exploration_s = optional_number(t, "exploration", 0.0, where + ".timings_s");
+      grasp.times.finger_s = optional_number(t, "finger", 0.0, where + ".timings_s");
+      grasp.times.quality_s = optional_number(t, "quality", 0.0, where + ".timings_s");
       p.grasps.push_back(std::move(grasp));
     }
   } catch (const nlohmann::json::exception& e) {

@@ -229,13 +229,7 @@ const GraspRegion* region_of(const Grasp& g, const std::vector<GraspRegion>& reg
 std::string run_render_plan(const RenderJobParams& opt, const Warn& warn) {
   const nlohmann::json json = read_plan_json(opt.plan);
   const HandModel hand = load_hand(plan_hand_path(json), opt.hand_load);
-  const PlanDocument plan = [&] {
-    try {
-      return plan_from_json(json, hand, "plan");
-    } catch (const InputError& e) {
-      throw InputError("render: '" + opt.plan + "': " + e.what());
-    }
-  }();
+  const PlanDocument plan = plan_from_json(json, hand, opt.plan);  // errors name the file
   const int count = static_cast<int>(plan.grasps.size());
   if (count == 0) throw InputError("render: '" + opt.plan + "': the plan holds no grasp");
   const int first = opt.sheet > 0 ? 0 : opt.grasp;

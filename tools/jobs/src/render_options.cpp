@@ -1,5 +1,10 @@
 #include "cordgrasp/jobs/render_options.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <regex>
 #include <sstream>
@@ -31,9 +36,21 @@ Eigen::Vector3d parse_vector3(const std::string& text, const std::string& what) 
 
 void check_output_file(const std::string& path) {
   namespace fs = std::filesystem;
+  if (path.empty()) throw InputError("output file: empty path");
+  std::error_code ec;
+  if (fs::is_directory(path, ec))
+    throw InputError("'" + path + "': is a directory, cannot write a file there");
   const fs::path dir = fs::path(path).parent_path();
-  if (path.empty() || (!dir.empty() && !fs::is_directory(dir)))
+  if (!dir.empty() && !fs::is_directory(dir, ec))
     throw InputError("'" + path + "': output directory does not exist");
+  // Writable: create and remove a probe beside the output (access() says yes to root even
+  // where a write then fails, e.g. on a read-only mount or in /proc).
+  const std::string probe = path + "." + std::to_string(static_cast<long>(::getpid())) + ".probe";
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
+  if (fd < 0)
+    throw InputError("'" + path + "': cannot write there (" + std::strerror(errno) + ")");
+  ::close(fd);
+  fs::remove(probe, ec);
 }
 
 RenderParams render_params(const PictureOptions& o, Scene& scene,

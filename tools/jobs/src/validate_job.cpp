@@ -32,6 +32,8 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   // Output folders are checked before minutes of simulation, not after.
   check_output_file(opt.out);
   if (!opt.trace_path.empty()) check_output_file(opt.trace_path);
+  if (!opt.cache_dir.empty() && !std::filesystem::is_directory(opt.cache_dir))
+    throw InputError("validate: --cache-dir '" + opt.cache_dir + "' is not a directory");
   const nlohmann::json plan_json = read_plan_json(opt.plan);
   // Hand: the plan's, or the one given (which must be the plan's).
   const std::string hand_path = opt.hand.empty() ? plan_hand_path(plan_json) : opt.hand;

@@ -27,8 +27,9 @@ std::pair<int, int> parse_image_size(const std::string& text);
 /// "x,y,z" → vector. @throws InputError when not three numbers.
 Eigen::Vector3d parse_vector3(const std::string& text, const std::string& what);
 
-/// Fails early, before rendering, when the directory of the output file `path` does not exist.
-/// @throws InputError naming the path.
+/// Fails early, before any work, when the output file `path` cannot be written: empty, an
+/// existing directory, in a missing directory, or in one where no file can be created.
+/// @throws InputError naming the path and the problem.
 void check_output_file(const std::string& path);
 
 /// Render parameters from `options`; also applies the ground and caption choices to `scene`.
