@@ -9,8 +9,8 @@
 # approximation of real size, and at --scale 1 (Dex-Net scale) beside it. The cylinder of
 # Fig. 11, the YCB and the shipped objects are real size and run at --scale 1 only.
 #
-# Without --full it runs the reduced protocol that fits a small shared machine (about 10-20 min
-# on 2 cores; what is reduced is listed in docs/results.md); --full runs the paper's counts
+# Without --full it runs the reduced protocol that fits a small shared machine (about 6 min CPU,
+# 20 min wall on a loaded 2-core machine; what is reduced is listed in docs/results.md); --full runs the paper's counts
 # (100 runs per Fig. 11 setting, physics on 10 attempts per object and two hands: hours on
 # 2 cores). Raw outputs (results.csv, summary.md, bench.json, contact sheets per experiment)
 # go to OUT_DIR (default /tmp/cordgrasp_results); the page to docs/results.md
@@ -112,5 +112,6 @@ mkdir -p "$IMG"
 "$PY" "$ROOT/tools/results_report.py" --in-dir "$OUT" --mode "$MODE" --img-dir "$IMG" \
   --fig11-runs "$FIG11_RUNS" --phys-repeats "$PHYS_REPEATS" --phys-hands "$PHYS_HANDS" \
   --wall-s $((end - start)) --jobs "$JOBS" --load "$load" \
-  --commit "$(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo unknown)" --notes "$ROOT/docs/results-notes.md" --out "$MD"
+  --commit "$(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo unknown)" \
+  --notes "$ROOT/docs/results-notes.md" --out "$MD"
 echo "wrote $MD (raw outputs in $OUT)" >&2

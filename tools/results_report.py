@@ -417,7 +417,7 @@ def fig17(in_dir, out, objects):
         ax.bar([x + (i - 0.5) * 0.38 for x in xs], [b[1 + i][0] or 0 for b in bars], 0.38,
                yerr=[b[1 + i][1] or 0 for b in bars], capsize=2, label=lab)
     ax.set_xticks(list(xs))
-    ax.set_xticklabels([b[0] for b in bars], fontsize=8)
+    ax.set_xticklabels([b[0] for b in bars], fontsize=8, rotation=15)
     ax.set_ylabel("α mean ± sd [deg]")
     ax.legend(fontsize=8)
     ax.set_title("Fig. 17 stand-ins, Schunk SAH, scale ×1 (real size)")
@@ -493,7 +493,8 @@ def main():
     out.append(f"- Regenerate: `tools/results.sh{' --full' if a.mode == 'full' else ''} "
                "[OUT_DIR]` (needs `build/tools/cordgrasp`, `../shared/data` and Debian's "
                "`/usr/bin/python3` with python3-matplotlib for the plots).")
-    out.append(f"- Machine: {machine()}; load average (1, 5, 15 min) at the end of the run {' '.join(load)} (the machine "
+    out.append(f"- Machine: {machine()}; load average (1, 5, 15 min) at the end of the run "
+               f"{' '.join(load)} (the machine "
                "was shared with other jobs: wall-clock times are inflated, not comparable to the "
                "paper's Core i5 at 3.4 GHz)." if load else f"- Machine: {machine()}.")
     if a.commit:
