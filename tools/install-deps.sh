@@ -21,6 +21,7 @@ PKGS=(
   libbenchmark-dev
   python3 python3-dev pybind11-dev       # the Python module (tools/python)
   python3-numpy python3-pytest            # its arrays and its test suite
+  python3-matplotlib                      # tools/results.sh: the plots of docs/results.md
   libmujoco-dev                           # tests/export and mujoco_check: MuJoCo 2.2.2
 )
 

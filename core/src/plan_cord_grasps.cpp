@@ -92,12 +92,14 @@ std::vector<int> cord_region_order(const std::vector<GraspRegion>& regions, doub
                                    const CordParams& cord) {
   std::vector<int> order(regions.size());
   std::iota(order.begin(), order.end(), 0);
-  std::vector<char> shrunk(regions.size(), 0);
+  // Sort key before χ: 1 for a set shrunk below the palm width; under kFallback the number of
+  // missed (empty) cords, so that the sets closest to the paper's full sets come first.
+  std::vector<int> shrunk(regions.size(), 0);
   for (size_t i = 0; i < regions.size(); ++i) {
     const GraspRegion& g = regions[i];
     shrunk[i] = g.n < cords_per_side(g.p1, g.p2, g.p3, g.p_m, palm_width_m, cord) ? 1 : 0;
-    if (cord.side_cord_policy == SideCordPolicy::kFallback && side_cords_missed(g) > 0)
-      shrunk[i] = 1;  // a fallback set: after every set whose cords all touch the object
+    if (cord.side_cord_policy == SideCordPolicy::kFallback)
+      shrunk[i] = side_cords_missed(g);  // 0 = every cord touches the object
   }
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
     if (shrunk[static_cast<size_t>(a)] != shrunk[static_cast<size_t>(b)])

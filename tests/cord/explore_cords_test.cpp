@@ -207,6 +207,16 @@ TEST(ExploreCords, TheDefaultFallbackFindsSetsOnASmallObjectAndRanksFullSetsFirs
     full += partial ? 0 : 1;
   }
   EXPECT_GT(full, 0);
+
+  // Sets with missed cords: fewest missed first, ascending χ among equals.
+  const std::vector<int> small_order = cord_region_order(small, kPalmWidth_m, p);
+  ASSERT_EQ(small_order.size(), small.size());
+  for (size_t k = 1; k < small_order.size(); ++k) {
+    const GraspRegion& a = small[static_cast<size_t>(small_order[k - 1])];
+    const GraspRegion& b = small[static_cast<size_t>(small_order[k])];
+    ASSERT_LE(side_cords_missed(a), side_cords_missed(b)) << "at " << k;
+    if (side_cords_missed(a) == side_cords_missed(b)) EXPECT_LE(a.chi_m2, b.chi_m2) << k;
+  }
 }
 
 /// Default parameters capped at a few sets explore without NaN and yield at least one region.

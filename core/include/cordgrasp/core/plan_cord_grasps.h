@@ -34,8 +34,11 @@ PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand
 /// SideCordPolicy::kShrink (n below cords_per_side(), docs/algorithm.md §4) come after every full
 /// set. Shrunk sets have fewer, less tilted cords, hence a lower χ for reasons unrelated to the
 /// object's shape (on the long cylinder they rank oblique corner sets first). Likewise under
-/// SideCordPolicy::kFallback the sets with missed (empty) cords come after every set whose
-/// cords all touch the object. With kDiscardSet and kEmptyWhenMissed this is plain ascending χ.
+/// SideCordPolicy::kFallback the sets are ordered by their number of missed (empty) cords, then
+/// by χ: every set whose cords all touch the object first, then the sets that miss fewest (an
+/// empty cord costs only A(Q_0), so a small cap at the object's edge that misses most of the
+/// scan would otherwise outrank a set that wraps the object). With kDiscardSet and
+/// kEmptyWhenMissed this is plain ascending χ.
 std::vector<int> cord_region_order(const std::vector<GraspRegion>& regions, double palm_width_m,
                                    const CordParams& cord);
 
