@@ -53,6 +53,7 @@ void apply_protocol(Protocol protocol, SimParams* params) {
       p.shake_time_s = 0.5;
       p.rock_frequency_hz = 2.0;  // one period in rock_time_s: tilts both ways
       p.rock_time_s = 0.5;
+      p.shake_all_axes_at_once = false;
       p.gravity6_time_s = 0.5;
       p.reach_start_fraction = 0.8;
       p.rest_exit_time_s = 0.1;
@@ -64,6 +65,7 @@ void apply_protocol(Protocol protocol, SimParams* params) {
       p.shake_time_s = 1.0;
       p.rock_frequency_hz = 1.0;
       p.rock_time_s = 1.0;
+      p.shake_all_axes_at_once = false;
       p.gravity6_time_s = 1.0;
       p.reach_start_fraction = 0.0;
       p.rest_exit_time_s = 0.0;

@@ -113,6 +113,23 @@ TEST(ValidateGrasp, ThoroughProtocolHoldsTheCentrePinchThroughItsFullPhases) {
   EXPECT_EQ(r.phase("gravity6")->steps, 6 * steps(params.gravity6_time_s));
 }
 
+TEST(ValidateGrasp, ShakeAlongAllAxesAtOnceRunsOneTranslationAndOneRotationSegment) {
+  SimParams params = gripper_params(Protocol::kThorough);
+  params.shake_all_axes_at_once = true;
+  std::vector<std::string> segments;
+  GraspSimulation sim(box(), gripper(), centre_pinch(), params);
+  sim.set_segment_hook([&](const PhaseSnapshot& s) { segments.push_back(s.phase); });
+  sim.settle();
+  sim.close();
+  const PhaseResult r = sim.shake();
+  EXPECT_EQ(r.outcome, Outcome::kHeld);
+  EXPECT_EQ(segments, (std::vector<std::string>{"shake xyz", "shake rock xyz"}));
+  const auto steps = [&](double t_s) {
+    return static_cast<int>(std::lround(t_s / params.time_step_s));
+  };
+  EXPECT_EQ(r.steps, steps(params.shake_time_s) + steps(params.rock_time_s));
+}
+
 TEST(ValidateGrasp, QuickProtocolEndsTheHoldsOnceTheHeldBoxRests) {
   const SimParams params = gripper_params(Protocol::kQuick);
   const SimResult r = validate_grasp(box(), gripper(), centre_pinch(), params);

@@ -187,6 +187,10 @@ struct SimParams {
   double rock_frequency_hz = 2.0;     ///< (preset; at least 1 / rock_time_s is used: tilts
                                       ///< both ways)
   double rock_time_s = 0.5;           ///< per axis (preset)
+  /// Shake and rock along / about x_W, y_W and z_W at once: one segment of shake_time_s and
+  /// one of rock_time_s, each axis's sine a third of a period after the last (a Lissajous
+  /// path), instead of one segment per axis (preset).
+  bool shake_all_axes_at_once = false;
   double gravity6_time_s = 0.5;       ///< gravity6: at most this per direction ±x, ±y, ±z,
                                       ///< hand fixed (preset)
   /// Reach start: before settle the fingers are put this fraction of the way from the preshape
@@ -261,7 +265,8 @@ struct SimParams {
                  CORDGRASP_NVP(lift_hold_s), CORDGRASP_NVP(shake_amplitude_m),
                  CORDGRASP_NVP(shake_frequency_hz), CORDGRASP_NVP(shake_time_s),
                  CORDGRASP_NVP(rock_angle_rad), CORDGRASP_NVP(rock_frequency_hz),
-                 CORDGRASP_NVP(rock_time_s), CORDGRASP_NVP(gravity6_time_s),
+                 CORDGRASP_NVP(rock_time_s), CORDGRASP_NVP(shake_all_axes_at_once),
+                 CORDGRASP_NVP(gravity6_time_s),
                  CORDGRASP_NVP(reach_start_fraction), CORDGRASP_NVP(reach_start_clearance_m),
                  CORDGRASP_NVP(rest_exit_time_s), CORDGRASP_NVP(rest_drift_m),
                  CORDGRASP_NVP(rest_drift_rad), CORDGRASP_NVP(exit_on_failure),
