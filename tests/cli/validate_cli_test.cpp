@@ -229,6 +229,30 @@ TEST_F(ValidateCli, CompliantContactsAndTheTimeStepAreOptionsRecordedInSimJson) 
             def["grasps"][0]["phases"][2]["steps"].get<int>());
 }
 
+TEST_F(ValidateCli, ProtocolFieldOptionsOverrideThePresetAndAreRecordedInSimJson) {
+  const auto r = run_cordgrasp("validate --plan " + plan_path() +
+                               " --tests lift,shake --grasps 1 -q --protocol thorough"
+                               " --shake-axes together --rock-frequency 2 --rock-time 0.5"
+                               " --shake-time 0.5 --lift-hold 0.2 --rest-exit-time 0.05 --out " +
+                               out_path());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json sim = read_out();
+  EXPECT_EQ(sim["parameters"]["protocol"], "thorough");
+  EXPECT_EQ(sim["parameters"]["shake_all_axes_at_once"], true);
+  EXPECT_EQ(sim["parameters"]["rock_frequency_hz"], 2.0);
+  EXPECT_EQ(sim["parameters"]["rock_time_s"], 0.5);
+  EXPECT_EQ(sim["parameters"]["shake_time_s"], 0.5);
+  EXPECT_EQ(sim["parameters"]["lift_hold_s"], 0.2);
+  EXPECT_EQ(sim["parameters"]["rest_exit_time_s"], 0.05);
+  EXPECT_EQ(sim["parameters"]["time_step_s"], 1.0 / 960.0);  // thorough's, not overridden
+  EXPECT_EQ(sim["grasps"][0]["outcome"], "held");
+  // One translation and one rotation segment of 0.5 s each.
+  EXPECT_EQ(sim["grasps"][0]["phases"][3]["steps"], 960);
+  const auto bad = run_cordgrasp("validate --plan " + plan_path() +
+                                 " --shake-axes diagonal --out " + out_path());
+  EXPECT_NE(bad.exit_code, 0);
+}
+
 TEST_F(ValidateCli, WarmstartAndHullVerticesAreOptionsRecordedInSimJson) {
   const auto r = run_cordgrasp("validate --plan " + plan_path() +
                                " --tests lift --grasps 1 -q --warmstart --hull-vertices 32 --out " +

@@ -498,6 +498,10 @@ TEST(ApplyProtocol, QuickIsTheDefaultAndThoroughTheLongProtocol) {
   EXPECT_EQ(quick.reach_start_fraction, defaults.reach_start_fraction);
   EXPECT_EQ(quick.rest_exit_time_s, defaults.rest_exit_time_s);
   EXPECT_EQ(quick.exit_on_failure, defaults.exit_on_failure);
+  EXPECT_EQ(quick.time_step_s, defaults.time_step_s);
+  EXPECT_EQ(quick.shake_all_axes_at_once, defaults.shake_all_axes_at_once);
+  EXPECT_EQ(quick.time_step_s, 1.0 / 480.0);
+  EXPECT_TRUE(quick.shake_all_axes_at_once);
   // Thorough: the protocol's numbers before the quick preset, and no early exit.
   const SimParams t = sim_params_for(Protocol::kThorough);
   EXPECT_EQ(t.protocol, Protocol::kThorough);
@@ -514,6 +518,7 @@ TEST(ApplyProtocol, QuickIsTheDefaultAndThoroughTheLongProtocol) {
   EXPECT_EQ(t.rock_time_s, 1.0);
   EXPECT_EQ(t.gravity6_time_s, 1.0);
   EXPECT_EQ(t.reach_start_fraction, 0.0);
+  EXPECT_FALSE(t.shake_all_axes_at_once);
   EXPECT_EQ(t.rest_exit_time_s, 0.0);
   EXPECT_FALSE(t.exit_on_failure);
   EXPECT_EQ(t.time_step_s, 1.0 / 960.0);
@@ -523,7 +528,9 @@ TEST(ApplyProtocol, QuickIsTheDefaultAndThoroughTheLongProtocol) {
   SimParams custom;
   custom.contact.mu = 0.3;
   custom.lift_height_m = 0.2;
+  custom.time_step_s = 1.0 / 2000.0;
   apply_protocol(Protocol::kThorough, &custom);
+  EXPECT_EQ(custom.time_step_s, 1.0 / 960.0);  // a preset field
   EXPECT_EQ(custom.contact.mu, 0.3);
   EXPECT_EQ(custom.lift_height_m, 0.2);
   EXPECT_EQ(custom.lift_time_s, 1.0);
