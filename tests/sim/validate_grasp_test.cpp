@@ -164,8 +164,9 @@ TEST(ValidateGrasp, FailureExitEndsAFailedLiftEarlyWithTheSameOutcome) {
 }
 
 TEST(ValidateGrasp, QuickRockTiltsTheHandBothWaysAboutEachAxis) {
-  /// The faded sine reaches its full amplitude once a quarter period after the fade-in.
-  constexpr double kReachedAmplitude = 0.9;
+  /// Over one period of the faded Lissajous rock each axis's sine reaches at least 68 % of
+  /// the amplitude both ways (the axis a third of a period late peaks once during the fade).
+  constexpr double kReachedAmplitude = 0.6;
   SimParams params = gripper_params(Protocol::kQuick);
   params.trace_interval_s = params.time_step_s;
   const size_t root = static_cast<size_t>(gripper().root_link);
@@ -174,15 +175,14 @@ TEST(ValidateGrasp, QuickRockTiltsTheHandBothWaysAboutEachAxis) {
                  [&](const PhaseSnapshot& s) {
                    if (s.phase.rfind("shake", 0) == 0) shake.push_back(s);
                  });
+  // The rock about all axes at once: samples after the translation segment's end.
+  const auto start = std::find_if(shake.begin(), shake.end(), [&](const PhaseSnapshot& s) {
+    return s.phase_end && s.phase == "shake xyz";
+  });
+  ASSERT_NE(start, shake.end());
+  const Eigen::Matrix3d R_W0 = start->X_WL[root].linear();
   const char* axes[3] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) {
-    // The rock about axis a: samples after the previous segment's end up to this one's.
-    const std::string before = a == 0 ? "shake z" : std::string("shake rock ") + axes[a - 1];
-    const auto start = std::find_if(shake.begin(), shake.end(), [&](const PhaseSnapshot& s) {
-      return s.phase_end && s.phase == before;
-    });
-    ASSERT_NE(start, shake.end()) << before;
-    const Eigen::Matrix3d R_W0 = start->X_WL[root].linear();
     double most = 0.0, least = 0.0;
     for (auto it = start + 1; it != shake.end() && !it->phase_end; ++it) {
       const Eigen::AngleAxisd turn(it->X_WL[root].linear() * R_W0.transpose());
