@@ -315,7 +315,8 @@ TEST_F(ValidateCli, HullsOfFewerThanFourVerticesAreAnError) {
 
 TEST_F(ValidateCli, TrialsRepeatEachGraspWithTheHandNudgedAndShowAPointContactPinchIsFragile) {
   const std::string cmd = "validate --plan " + plan_path() +
-                          " --tests lift --grasps 1 -q --trials 3 --trial-offset 0.001 --out " +
+                          " --tests lift --grasps 1 -q --trials 3 --trial-offset 0.001"
+                          " --protocol thorough --out " +
                           out_path();
   const auto r = run_cordgrasp(cmd);
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -331,7 +332,8 @@ TEST_F(ValidateCli, TrialsRepeatEachGraspWithTheHandNudgedAndShowAPointContactPi
   EXPECT_EQ(sim["summary"]["trials"], 3);
   // This plan pinches with point contacts (no soft-finger radius), which carry no torque about
   // the line through the pads: the pinch as planned holds, but 1 mm off the centre line the
-  // box turns out of it. The trials show what the single run hides.
+  // box turns out of it (at thorough's 1/960 s; quick's 1/480 s lift holds it in all three).
+  // The trials show what the single run hides.
   EXPECT_EQ(sim["parameters"]["contact"]["soft_finger_radius_m"], 0.0);
   EXPECT_EQ(trials["outcomes"][0], "held");
   EXPECT_LT(trials["held"].get<int>(), 3) << trials.dump();
