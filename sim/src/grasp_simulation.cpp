@@ -54,13 +54,21 @@ double min_jerk_rate(double tau) {
 
 /// sin(2πft) faded in and out over a quarter period at both ends (sin² ramps), so the motion
 /// starts and ends at rest; 0 outside [0, T].
-double faded_sine(double t, double frequency_hz, double duration_s) {
+double faded_sine(double t, double frequency_hz, double duration_s, double phase_rad = 0.0) {
   if (t <= 0.0 || t >= duration_s) return 0.0;
   const double ramp = std::min(0.25 / frequency_hz, 0.5 * duration_s);
   double envelope = 1.0;
   if (t < ramp) envelope = std::pow(std::sin(0.5 * M_PI * t / ramp), 2);
   if (duration_s - t < ramp) envelope = std::pow(std::sin(0.5 * M_PI * (duration_s - t) / ramp), 2);
-  return envelope * std::sin(2.0 * M_PI * frequency_hz * t);
+  return envelope * std::sin(2.0 * M_PI * frequency_hz * t + phase_rad);
+}
+
+/// Faded sines along x, y and z, each a third of a period after the last (a Lissajous path:
+/// every axis goes both ways within one period, the three never peak together).
+Eigen::Vector3d faded_lissajous(double t, double frequency_hz, double duration_s) {
+  Eigen::Vector3d v;
+  for (int a = 0; a < 3; ++a) v[a] = faded_sine(t, frequency_hz, duration_s, 2.0 * M_PI * a / 3.0);
+  return v;
 }
 
 bool finite(const btVector3& v) {
@@ -703,6 +711,41 @@ PhaseResult GraspSimulation::shake() {
     return s.segment_holds(r, "shake " + name, ran);
   };
   bool ok = true;
+  if (s.params.shake_all_axes_at_once) {
+    // One translation segment and one rotation segment along / about all three axes.
+    const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
+    const double A = s.params.shake_amplitude_m;
+    const double T = s.params.shake_time_s;
+    const double f = std::max(s.params.shake_frequency_hz, 1.0 / T);
+    const bool ran = s.run(T, [&](double t) {
+      Eigen::Isometry3d X = X_WB0;
+      X.translation() += A * faded_lissajous(t, f, T);
+      return X;
+    });
+    ok = segment_held("xyz", ran);
+    if (ok) {
+      const Eigen::Isometry3d X_WB1 = s.X_WB_cmd;
+      const Eigen::Vector3d pivot =
+          gcp_pose(s.hand, link_poses(s.hand, s.grasp.q, X_WB1)).translation();
+      const double Theta = s.params.rock_angle_rad;
+      const double T_rock = s.params.rock_time_s;
+      const double f_rock = std::max(s.params.rock_frequency_hz, 1.0 / T_rock);
+      const bool rock_ran = s.run(T_rock, [&](double t) {
+        const Eigen::Vector3d theta = Theta * faded_lissajous(t, f_rock, T_rock);
+        Eigen::Isometry3d M = Eigen::Isometry3d::Identity();
+        if (theta.norm() > 0.0) {
+          const Eigen::Matrix3d R =
+              Eigen::AngleAxisd(theta.norm(), theta.normalized()).toRotationMatrix();
+          M.linear() = R;
+          M.translation() = pivot - R * pivot;
+        }
+        return Eigen::Isometry3d(M * X_WB1);
+      });
+      ok = segment_held("rock xyz", rock_ran);
+    }
+    s.finish(r, s.X_BO_ref);
+    return r;
+  }
   for (int a = 0; a < 3 && ok; ++a) {
     const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
     const Eigen::Vector3d axis = Eigen::Vector3d::Unit(a);

@@ -48,22 +48,26 @@ void apply_protocol(Protocol protocol, SimParams* params) {
   p.protocol = protocol;
   switch (protocol) {
     case Protocol::kQuick:
+      p.time_step_s = 1.0 / 480.0;
       p.lift_time_s = 0.5;
       p.lift_hold_s = 0.3;
       p.shake_time_s = 0.5;
       p.rock_frequency_hz = 2.0;  // one period in rock_time_s: tilts both ways
       p.rock_time_s = 0.5;
+      p.shake_all_axes_at_once = true;  // one segment each for shake and rock
       p.gravity6_time_s = 0.5;
       p.reach_start_fraction = 0.8;
       p.rest_exit_time_s = 0.1;
       p.exit_on_failure = true;
       return;
     case Protocol::kThorough:
+      p.time_step_s = 1.0 / 960.0;
       p.lift_time_s = 1.0;
       p.lift_hold_s = 1.0;
       p.shake_time_s = 1.0;
       p.rock_frequency_hz = 1.0;
       p.rock_time_s = 1.0;
+      p.shake_all_axes_at_once = false;
       p.gravity6_time_s = 1.0;
       p.reach_start_fraction = 0.0;
       p.rest_exit_time_s = 0.0;

@@ -72,6 +72,27 @@ void add_validate_command(CLI::App& app) {
                   "Finger-object contact damping [N s/m], with --contact-stiffness (default " +
                       format_number(defaults.contact_damping_Nspm) + ")")
       ->check(number_in(0.0, 1e7));
+  cmd->add_option("--lift-hold", opt->job.lift_hold_s,
+                  "Longest hold after the lift [s] (default: the protocol's)")
+      ->check(number_in(0.0, 100.0));
+  cmd->add_option("--shake-time", opt->job.shake_time_s,
+                  "Time of each shake segment [s] (default: the protocol's)")
+      ->check(number_in(1e-3, 100.0));
+  cmd->add_option("--rock-time", opt->job.rock_time_s,
+                  "Time of each rock segment [s] (default: the protocol's)")
+      ->check(number_in(1e-3, 100.0));
+  cmd->add_option("--rock-frequency", opt->job.rock_frequency_hz,
+                  "Rock frequency [Hz]; at least one period per segment is used (default: the "
+                  "protocol's)")
+      ->check(number_in(1e-3, 100.0));
+  cmd->add_option("--rest-exit-time", opt->job.rest_exit_time_s,
+                  "The lift's hold ends once the object rested this long in the hand [s]; 0: "
+                  "never (default: the protocol's)")
+      ->check(number_in(0.0, 100.0));
+  cmd->add_option("--shake-axes", opt->job.shake_axes,
+                  "Shake and rock one axis after the other ('sequential') or along all three "
+                  "at once ('together') (default: the protocol's)")
+      ->check(CLI::IsMember({"sequential", "together"}));
   cmd->add_option("--squeeze", opt->job.squeeze_rad,
                   "Squeeze spring rest point past the planned joint values [rad] (default " +
                       format_number(defaults.squeeze_rad) + ")")

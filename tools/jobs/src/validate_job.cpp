@@ -73,6 +73,17 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   if (opt.solver_iterations) params.solver_iterations = *opt.solver_iterations;
   if (opt.contact_stiffness_Npm) params.contact_stiffness_Npm = *opt.contact_stiffness_Npm;
   if (opt.contact_damping_Nspm) params.contact_damping_Nspm = *opt.contact_damping_Nspm;
+  if (opt.lift_hold_s) params.lift_hold_s = *opt.lift_hold_s;
+  if (opt.shake_time_s) params.shake_time_s = *opt.shake_time_s;
+  if (opt.rock_time_s) params.rock_time_s = *opt.rock_time_s;
+  if (opt.rock_frequency_hz) params.rock_frequency_hz = *opt.rock_frequency_hz;
+  if (opt.rest_exit_time_s) params.rest_exit_time_s = *opt.rest_exit_time_s;
+  if (!opt.shake_axes.empty()) {
+    if (opt.shake_axes != "sequential" && opt.shake_axes != "together")
+      throw InputError("validate: --shake-axes '" + opt.shake_axes +
+                       "': expected sequential or together");
+    params.shake_all_axes_at_once = opt.shake_axes == "together";
+  }
   if (opt.squeeze_rad) params.squeeze_rad = *opt.squeeze_rad;
   if (!opt.squeeze_direction.empty())
     params.squeeze_direction = parse_squeeze_direction(opt.squeeze_direction);

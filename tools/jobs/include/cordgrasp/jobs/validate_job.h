@@ -34,6 +34,13 @@ struct ValidateJobParams {
   std::optional<int> solver_iterations;
   std::optional<double> contact_stiffness_Npm;
   std::optional<double> contact_damping_Nspm;
+  // Protocol fields overriding the preset (SimParams of the same names).
+  std::optional<double> lift_hold_s;
+  std::optional<double> shake_time_s;
+  std::optional<double> rock_time_s;
+  std::optional<double> rock_frequency_hz;
+  std::optional<double> rest_exit_time_s;
+  std::string shake_axes;  ///< "sequential", "together" (shake_all_axes_at_once); "": preset
   std::optional<double> concavity;
   std::optional<double> squeeze_rad;
   std::string squeeze_direction;
