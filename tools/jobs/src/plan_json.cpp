@@ -129,6 +129,7 @@ nlohmann::json stats_json(const PlanStats& s) {
           {"one_contact", s.one_contact},
           {"cannot_retreat", s.cannot_retreat},
           {"not_force_closure", s.not_force_closure},
+          {"filtered", s.filtered},
           {"setup_s", s.setup_s},
           {"exploration_s", s.exploration_s},
           {"finger_s", s.finger_s},
@@ -150,6 +151,7 @@ PlanStats stats_from_json(const nlohmann::json& j) {
   s.one_contact = j.value("one_contact", 0);
   s.cannot_retreat = j.value("cannot_retreat", 0);
   s.not_force_closure = j.value("not_force_closure", 0);
+  s.filtered = j.value("filtered", 0);
   s.setup_s = j.value("setup_s", 0.0);
   s.exploration_s = j.value("exploration_s", 0.0);
   s.finger_s = j.value("finger_s", 0.0);
@@ -203,6 +205,7 @@ nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand) {
          {"epsilon", g.epsilon},
          {"alpha_rad", g.alpha_rad},
          {"alpha_approach_rad", g.alpha_approach_rad},
+         {"measures", params_to_json(g.measures)},
          {"chi_m2", optional_json(g.chi_m2)},
          {"region_rank", g.region_rank ? nlohmann::json(*g.region_rank) : nlohmann::json(nullptr)},
          {"region", g.region ? region_to_json(*g.region) : nlohmann::json(nullptr)},
