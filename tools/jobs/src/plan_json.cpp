@@ -345,6 +345,10 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
           g.contains("alpha_approach_rad")
               ? finite_number(g.at("alpha_approach_rad"), where + ".alpha_approach_rad")
               : grasp.alpha_rad;
+      if (g.contains("measures"))  // plans written before the measures existed have none
+        params_from_json(g.at("measures"), source,
+                         "grasps[" + std::to_string(p.grasps.size()) + "].measures",
+                         &grasp.measures);
       if (g.contains("chi_m2") && !g["chi_m2"].is_null()) grasp.chi_m2 = g["chi_m2"].get<double>();
       if (g.contains("region_rank") && !g["region_rank"].is_null())
         grasp.region_rank = g["region_rank"].get<int>();
