@@ -1,5 +1,7 @@
 #include "plan_internal.h"
 
+#include "cordgrasp/core/candidate_measures.h"
+#include "cordgrasp/core/convex_hull_volume.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/skewness.h"
@@ -13,6 +15,9 @@ PlanContext make_plan_context(const Mesh& mesh, const HandModel& hand, HandObjec
   ctx.setup = prepare_hand(hand, collider);
   ctx.wrench_object = prepare_wrench_space(mesh, params.quality);
   ctx.principal_axis_O = principal_axes(mesh).axes.col(0);
+  const std::optional<SolidVolume> closed = closed_mesh_volume(mesh);
+  ctx.com_O = closed ? closed->center_of_mass_m : convex_hull_volume(mesh).center_of_mass_m;
+  ctx.radius_m = bounding_radius(mesh, vertex_mean(mesh));
   stats.setup_s += seconds_since(start);
   return ctx;
 }
@@ -48,6 +53,15 @@ bool attempt_grasp(const HandModel& hand, HandObjectCollider& collider, const Pl
     ++stats.not_force_closure;
     return false;
   }
+  const CandidateMeasures measures =
+      candidate_measures(fr.contacts, ctx.setup, ctx.com_O, ctx.radius_m);
+  const CandidateParams& filter = params.candidate;
+  if (quality.epsilon < filter.min_epsilon || measures.fingers_in_contact < filter.min_fingers ||
+      (filter.max_com_offset > 0.0 && measures.com_offset > filter.max_com_offset) ||
+      (filter.max_push_imbalance > 0.0 && measures.push_imbalance > filter.max_push_imbalance)) {
+    ++stats.filtered;
+    return false;
+  }
   grasp = Grasp{};
   grasp.X_OB = fr.X_OB;
   grasp.X_OG = fr.X_OG;
@@ -56,6 +70,7 @@ bool attempt_grasp(const HandModel& hand, HandObjectCollider& collider, const Pl
   grasp.contacts = fr.contacts;
   grasp.force_closure = true;
   grasp.epsilon = quality.epsilon;
+  grasp.measures = measures;
   grasp.alpha_approach_rad =
       skewness_alpha_rad(fr.X_OG.linear().col(2), ctx.principal_axis_O);
   grasp.alpha_rad = grasp.alpha_approach_rad;

@@ -17,6 +17,9 @@ struct PlanContext {
   HandSetup setup;
   WrenchSpaceObject wrench_object;
   Eigen::Vector3d principal_axis_O = Eigen::Vector3d::UnitZ();
+  /// Centre of mass at uniform density (closed volume, else convex hull) and bounding radius r.
+  Eigen::Vector3d com_O = Eigen::Vector3d::Zero();
+  double radius_m = 0.0;
 };
 
 /// Builds the PlanContext (timed into stats.setup_s).

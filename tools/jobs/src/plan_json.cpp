@@ -168,6 +168,7 @@ nlohmann::json stats_json(const PlanStats& s) {
           {"one_contact", s.one_contact},
           {"cannot_retreat", s.cannot_retreat},
           {"not_force_closure", s.not_force_closure},
+          {"filtered", s.filtered},
           {"setup_s", s.setup_s},
           {"exploration_s", s.exploration_s},
           {"finger_s", s.finger_s},
@@ -189,6 +190,7 @@ PlanStats stats_from_json(const nlohmann::json& j) {
   s.one_contact = j.value("one_contact", 0);
   s.cannot_retreat = j.value("cannot_retreat", 0);
   s.not_force_closure = j.value("not_force_closure", 0);
+  s.filtered = j.value("filtered", 0);
   s.setup_s = j.value("setup_s", 0.0);
   s.exploration_s = j.value("exploration_s", 0.0);
   s.finger_s = j.value("finger_s", 0.0);
@@ -242,6 +244,7 @@ nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand) {
          {"epsilon", g.epsilon},
          {"alpha_rad", g.alpha_rad},
          {"alpha_approach_rad", g.alpha_approach_rad},
+         {"measures", params_to_json(g.measures)},
          {"chi_m2", optional_json(g.chi_m2)},
          {"region_rank", g.region_rank ? nlohmann::json(*g.region_rank) : nlohmann::json(nullptr)},
          {"region", g.region ? region_to_json(*g.region) : nlohmann::json(nullptr)},
@@ -390,6 +393,10 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
       // Plans written before the palm normal existed hold one α, of the GCP z axis.
       grasp.alpha_approach_rad =
           optional_number(g, "alpha_approach_rad", grasp.alpha_rad, where);
+      if (g.contains("measures"))  // plans written before the measures existed have none
+        params_from_json(g.at("measures"), source,
+                         "grasps[" + std::to_string(p.grasps.size()) + "].measures",
+                         &grasp.measures);
       if (g.contains("chi_m2") && !g["chi_m2"].is_null())
         grasp.chi_m2 = finite_number(g["chi_m2"], where + ".chi_m2");
       if (g.contains("region_rank") && !g["region_rank"].is_null()) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cordgrasp/core/grasp_region.h"
+#include "cordgrasp/core/serialize.h"
 
 namespace cordgrasp {
 
@@ -15,6 +16,26 @@ struct Contact {
   Eigen::Vector3d p_O = Eigen::Vector3d::Zero();    ///< contact point on the object [m]
   Eigen::Vector3d n_O = Eigen::Vector3d::UnitZ();   ///< unit normal, out of the object (toward
                                                     ///< the finger); the finger pushes along −n_O
+};
+
+/// Measures of a closed grasp that the wrench space does not see, computed from its contacts
+/// (docs/finger-stage-and-quality.md, "Candidate filters").
+struct CandidateMeasures {
+  int fingers_in_contact = 0;  ///< actors with at least one contact
+  bool palm_contact = false;   ///< a static link (palm, finger base) touches the object
+  /// ‖mean of the contact points − centre of mass‖ / bounding radius r (0 = centred).
+  double com_offset = 0.0;
+  /// Net push of the fingers when each presses with the same force along its mean contact
+  /// normal, ‖Σ_a unit(Σ_k −n_k)‖ / fingers, in [0, 1] (0 = balanced); a component pushing
+  /// the object onto a static-link contact is taken by that contact and not counted.
+  double push_imbalance = 0.0;
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    visit_fields(a, CORDGRASP_NVP(fingers_in_contact), CORDGRASP_NVP(palm_contact),
+                 CORDGRASP_NVP(com_offset), CORDGRASP_NVP(push_imbalance));
+  }
 };
 
 /// Wall-clock time spent per planner stage [s].
@@ -40,6 +61,7 @@ struct Grasp {
   std::optional<int> region_rank;  ///< cord planner: rank of the region (0 = lowest χ)
   std::optional<double> chi_m2;    ///< cord planner: χ of that region [m²]
   std::optional<GraspRegion> region;  ///< cord planner: the region itself (cords, P1, P_l, P_r)
+  CandidateMeasures measures;      ///< contact-based measures (candidate_measures())
   StageTimes times;
 };
 
