@@ -15,7 +15,8 @@ constexpr EnumName<ObjectShape> kObjectShapeNames[] = {
 constexpr EnumName<SqueezeDirection> kSqueezeDirectionNames[] = {
     {SqueezeDirection::kActor, "actor"}, {SqueezeDirection::kContactNormals, "contacts"}};
 constexpr EnumName<Protocol> kProtocolNames[] = {{Protocol::kQuick, "quick"},
-                                                 {Protocol::kThorough, "thorough"}};
+                                                 {Protocol::kThorough, "thorough"},
+                                                 {Protocol::kFast, "fast"}};
 constexpr EnumName<WorldFrame> kWorldFrameNames[] = {{WorldFrame::kApproachDown, "approach_down"},
                                                      {WorldFrame::kObject, "object"}};
 
@@ -48,13 +49,14 @@ void apply_protocol(Protocol protocol, SimParams* params) {
   p.protocol = protocol;
   switch (protocol) {
     case Protocol::kQuick:
-      p.time_step_s = 1.0 / 480.0;
+    case Protocol::kFast:
+      p.time_step_s = protocol == Protocol::kFast ? 1.0 / 480.0 : 1.0 / 960.0;
       p.lift_time_s = 0.5;
       p.lift_hold_s = 0.3;
       p.shake_time_s = 0.5;
       p.rock_frequency_hz = 2.0;  // one period in rock_time_s: tilts both ways
       p.rock_time_s = 0.5;
-      p.shake_all_axes_at_once = true;  // one segment each for shake and rock
+      p.shake_all_axes_at_once = protocol == Protocol::kFast;  // one shake, one rock segment
       p.gravity6_time_s = 0.5;
       p.reach_start_fraction = 0.8;
       p.rest_exit_time_s = 0.1;

@@ -332,7 +332,7 @@ TEST_F(ValidateCli, TrialsRepeatEachGraspWithTheHandNudgedAndShowAPointContactPi
   EXPECT_EQ(sim["summary"]["trials"], 3);
   // This plan pinches with point contacts (no soft-finger radius), which carry no torque about
   // the line through the pads: the pinch as planned holds, but 1 mm off the centre line the
-  // box turns out of it (at thorough's 1/960 s; quick's 1/480 s lift holds it in all three).
+  // box turns out of it (at 1/960 s; fast's 1/480 s lift holds it in all three).
   // The trials show what the single run hides.
   EXPECT_EQ(sim["parameters"]["contact"]["soft_finger_radius_m"], 0.0);
   EXPECT_EQ(trials["outcomes"][0], "held");

@@ -164,10 +164,42 @@ TEST(ValidateGrasp, FailureExitEndsAFailedLiftEarlyWithTheSameOutcome) {
 }
 
 TEST(ValidateGrasp, QuickRockTiltsTheHandBothWaysAboutEachAxis) {
+  /// The faded sine reaches its full amplitude once a quarter period after the fade-in.
+  constexpr double kReachedAmplitude = 0.9;
+  SimParams params = gripper_params(Protocol::kQuick);
+  params.trace_interval_s = params.time_step_s;
+  const size_t root = static_cast<size_t>(gripper().root_link);
+  std::vector<PhaseSnapshot> shake;
+  validate_grasp(box(), gripper(), centre_pinch(), params, SimTests{true, true, false},
+                 [&](const PhaseSnapshot& s) {
+                   if (s.phase.rfind("shake", 0) == 0) shake.push_back(s);
+                 });
+  const char* axes[3] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a) {
+    // The rock about axis a: samples after the previous segment's end up to this one's.
+    const std::string before = a == 0 ? "shake z" : std::string("shake rock ") + axes[a - 1];
+    const auto start = std::find_if(shake.begin(), shake.end(), [&](const PhaseSnapshot& s) {
+      return s.phase_end && s.phase == before;
+    });
+    ASSERT_NE(start, shake.end()) << before;
+    const Eigen::Matrix3d R_W0 = start->X_WL[root].linear();
+    double most = 0.0, least = 0.0;
+    for (auto it = start + 1; it != shake.end() && !it->phase_end; ++it) {
+      const Eigen::AngleAxisd turn(it->X_WL[root].linear() * R_W0.transpose());
+      const double about_axis = (turn.axis() * turn.angle())[a];
+      most = std::max(most, about_axis);
+      least = std::min(least, about_axis);
+    }
+    EXPECT_GT(most, kReachedAmplitude * params.rock_angle_rad) << axes[a];
+    EXPECT_LT(least, -kReachedAmplitude * params.rock_angle_rad) << axes[a];
+  }
+}
+
+TEST(ValidateGrasp, FastRockTiltsTheHandBothWaysAboutEachAxis) {
   /// Over one period of the faded Lissajous rock each axis's sine reaches at least 68 % of
   /// the amplitude both ways (the axis a third of a period late peaks once during the fade).
   constexpr double kReachedAmplitude = 0.6;
-  SimParams params = gripper_params(Protocol::kQuick);
+  SimParams params = gripper_params(Protocol::kFast);
   params.trace_interval_s = params.time_step_s;
   const size_t root = static_cast<size_t>(gripper().root_link);
   std::vector<PhaseSnapshot> shake;
@@ -480,9 +512,9 @@ TEST(ObjectShapeFromString, RoundTripsEveryShape) {
 }
 
 TEST(ProtocolFromString, RoundTripsEveryProtocol) {
-  for (Protocol p : {Protocol::kQuick, Protocol::kThorough})
+  for (Protocol p : {Protocol::kQuick, Protocol::kThorough, Protocol::kFast})
     EXPECT_EQ(parse_protocol(to_string(p)), p);
-  EXPECT_THROW(parse_protocol("fast"), std::invalid_argument);
+  EXPECT_THROW(parse_protocol("medium"), std::invalid_argument);
 }
 
 TEST(ApplyProtocol, QuickIsTheDefaultAndThoroughTheLongProtocol) {
@@ -500,8 +532,17 @@ TEST(ApplyProtocol, QuickIsTheDefaultAndThoroughTheLongProtocol) {
   EXPECT_EQ(quick.exit_on_failure, defaults.exit_on_failure);
   EXPECT_EQ(quick.time_step_s, defaults.time_step_s);
   EXPECT_EQ(quick.shake_all_axes_at_once, defaults.shake_all_axes_at_once);
-  EXPECT_EQ(quick.time_step_s, 1.0 / 480.0);
-  EXPECT_TRUE(quick.shake_all_axes_at_once);
+  EXPECT_EQ(quick.time_step_s, 1.0 / 960.0);
+  EXPECT_FALSE(quick.shake_all_axes_at_once);
+  // Fast: quick's phases and early exits at 1/480 s, shake and rock along all axes at once.
+  const SimParams fast = sim_params_for(Protocol::kFast);
+  EXPECT_EQ(fast.protocol, Protocol::kFast);
+  EXPECT_EQ(fast.time_step_s, 1.0 / 480.0);
+  EXPECT_TRUE(fast.shake_all_axes_at_once);
+  EXPECT_EQ(fast.lift_time_s, quick.lift_time_s);
+  EXPECT_EQ(fast.rock_frequency_hz, quick.rock_frequency_hz);
+  EXPECT_EQ(fast.reach_start_fraction, quick.reach_start_fraction);
+  EXPECT_EQ(fast.exit_on_failure, quick.exit_on_failure);
   // Thorough: the protocol's numbers before the quick preset, and no early exit.
   const SimParams t = sim_params_for(Protocol::kThorough);
   EXPECT_EQ(t.protocol, Protocol::kThorough);

@@ -132,7 +132,7 @@ void add_plan_command(CLI::App& app) {
       ->check(physics_tests(false))
       ->capture_default_str();
   add_enum_option(cmd, "--protocol", &opt->validation.protocol,
-                  "--validate: physics protocol, quick or thorough");
+                  "--validate: physics protocol, quick, thorough or fast");
   add_validation_options(cmd, opt->validation);
   add_object_mass_options(cmd, opt->mass_kg, opt->density_kgm3);
   cmd->add_option("--jobs,-j", opt->jobs,

@@ -41,8 +41,8 @@ void add_validate_command(CLI::App& app) {
       ->check(physics_tests(false))
       ->capture_default_str();
   add_enum_option(cmd, "--protocol", &opt->job.protocol,
-                  "Phase durations and early exits: quick, or thorough (long phases, no early "
-                  "exits; docs/physics.md)");
+                  "Phase durations and early exits: quick, thorough (long phases, no early "
+                  "exits) or fast (1/480 s, all shake axes at once; docs/physics.md)");
   cmd->add_option("--mu", opt->job.mu, "Friction coefficient (default: the plan's μ)")
       ->check(number_in(0.0, 10.0));
   cmd->add_option("--mass", opt->job.mass_kg, "Object mass [kg] (default: density × volume)")

@@ -336,7 +336,10 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
                        " is not finite and > 0");
     p.object_triangles = in_obj.value("triangles", 0);
     if (!j.contains("parameters")) throw InputError(source + ": parameters: missing");
-    JsonReadArchive parameters(j.at("parameters"), source, "parameters");
+    nlohmann::json parameters_json = j.at("parameters");
+    if (parameters_json.is_object() && !parameters_json.contains("candidate"))
+      parameters_json["candidate"] = params_to_json(CandidateParams{});  // older plans: none
+    JsonReadArchive parameters(parameters_json, source, "parameters");
     PlanParameters{&p}.Serialize(&parameters);
     parameters.reject_unknown_keys();
     if (p.planner != "cord" && p.planner != "generic")
