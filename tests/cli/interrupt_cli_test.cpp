@@ -28,6 +28,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::quoted;
+using test::read_json;
+using test::read_text;
 using test::run_cordgrasp;
 using test::source_dir;
 using test::TempDir;
@@ -128,15 +130,6 @@ class Child {
   std::string stderr_;
 };
 
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);  // throws (test fails) when missing or not JSON
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 /// Files in `dir` (recursively) that look temporary: "*.tmp" anywhere in the name.
 std::vector<std::string> temp_files(const fs::path& dir) {

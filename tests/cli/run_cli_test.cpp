@@ -16,21 +16,14 @@ namespace {
 namespace fs = std::filesystem;
 using test::png_size;
 using test::quoted;
+using test::read_json;
+using test::read_text;
 using test::run_cordgrasp;
 using test::TempDir;
 
 constexpr int kGrasps = 2;
 constexpr unsigned kWidth_px = 160, kHeight_px = 120;
 
-nlohmann::json read_json(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);  // throws (test fails) when missing or not JSON
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 TEST(CliRun, DefaultsWritePlanSimReportAndPictures) {
   TempDir dir;

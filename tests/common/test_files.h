@@ -1,12 +1,15 @@
 #pragma once
-// Scratch folders and PNG probing for tests that run the CLI.
+// Scratch folders, file reading and PNG probing for tests that run the CLI.
 #include <gtest/gtest.h>
 #include <unistd.h>
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <utility>
 
@@ -30,6 +33,18 @@ struct TempDir {
   /// path / name as a string.
   std::string file(const std::string& name) const { return (path / name).string(); }
 };
+
+/// The file's JSON; throws (the test fails) when it is missing or not JSON.
+inline nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+/// The file's text; empty when it is missing.
+inline std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
 
 /// Width and height from a PNG's IHDR chunk (bytes 16..23, big-endian); (0, 0) if not a PNG.
 inline std::pair<std::uint32_t, std::uint32_t> png_size(const std::string& path) {

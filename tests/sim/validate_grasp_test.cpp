@@ -163,17 +163,23 @@ TEST(ValidateGrasp, FailureExitEndsAFailedLiftEarlyWithTheSameOutcome) {
   EXPECT_GE(a->translation_m, params.held_translation_m);
 }
 
-TEST(ValidateGrasp, QuickRockTiltsTheHandBothWaysAboutEachAxis) {
-  /// The faded sine reaches its full amplitude once a quarter period after the fade-in.
-  constexpr double kReachedAmplitude = 0.9;
-  SimParams params = gripper_params(Protocol::kQuick);
+/// Every step's snapshot of the shake phase of the centre pinch under `params`.
+std::vector<PhaseSnapshot> shake_snapshots(SimParams params) {
   params.trace_interval_s = params.time_step_s;
-  const size_t root = static_cast<size_t>(gripper().root_link);
   std::vector<PhaseSnapshot> shake;
   validate_grasp(box(), gripper(), centre_pinch(), params, SimTests{true, true, false},
                  [&](const PhaseSnapshot& s) {
                    if (s.phase.rfind("shake", 0) == 0) shake.push_back(s);
                  });
+  return shake;
+}
+
+TEST(ValidateGrasp, QuickRockTiltsTheHandBothWaysAboutEachAxis) {
+  /// The faded sine reaches its full amplitude once a quarter period after the fade-in.
+  constexpr double kReachedAmplitude = 0.9;
+  const SimParams params = gripper_params(Protocol::kQuick);
+  const size_t root = static_cast<size_t>(gripper().root_link);
+  const std::vector<PhaseSnapshot> shake = shake_snapshots(params);
   const char* axes[3] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) {
     // The rock about axis a: samples after the previous segment's end up to this one's.
@@ -199,14 +205,9 @@ TEST(ValidateGrasp, FastRockTiltsTheHandBothWaysAboutEachAxis) {
   /// Over one period of the faded Lissajous rock each axis's sine reaches at least 68 % of
   /// the amplitude both ways (the axis a third of a period late peaks once during the fade).
   constexpr double kReachedAmplitude = 0.6;
-  SimParams params = gripper_params(Protocol::kFast);
-  params.trace_interval_s = params.time_step_s;
+  const SimParams params = gripper_params(Protocol::kFast);
   const size_t root = static_cast<size_t>(gripper().root_link);
-  std::vector<PhaseSnapshot> shake;
-  validate_grasp(box(), gripper(), centre_pinch(), params, SimTests{true, true, false},
-                 [&](const PhaseSnapshot& s) {
-                   if (s.phase.rfind("shake", 0) == 0) shake.push_back(s);
-                 });
+  const std::vector<PhaseSnapshot> shake = shake_snapshots(params);
   // The rock about all axes at once: samples after the translation segment's end.
   const auto start = std::find_if(shake.begin(), shake.end(), [&](const PhaseSnapshot& s) {
     return s.phase_end && s.phase == "shake xyz";
