@@ -22,7 +22,7 @@ if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=cc
 
 sanitizer_pass() {
   cmake -S "$root" -B "$asan_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCORDGRASP_SANITIZE=ON \
-      -DCORDGRASP_BUILD_BENCH=OFF "${launcher[@]}" >/dev/null
+      -DCORDGRASP_BUILD_BENCH=OFF -DCORDGRASP_BUILD_PYTHON=OFF "${launcher[@]}" >/dev/null
   cmake --build "$asan_build" -j2
   # Leaks are not checked: Bullet's and OSMesa's process-lifetime allocations would drown them.
   (cd "$asan_build" &&
