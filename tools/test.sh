@@ -4,8 +4,9 @@
 # Usage: tools/test.sh [--sanitize] [extra ctest args, e.g. -L unit]
 #   --sanitize               only the sanitizer pass: builds with CORDGRASP_SANITIZE (ASan +
 #                            UBSan) in build-asan/ and runs the labels unit, physics, robustness
-#   CORDGRASP_SANITIZE_PASS=1  also run the sanitizer pass after the normal suite (off: its CI
-#                            cost is not measured yet)
+#   CORDGRASP_SANITIZE_PASS=1  also run the sanitizer pass after the normal suite (off in CI:
+#                            ~50 CPU-minutes of ASan build and tests on 2 cores would take
+#                            the CI to about 40 of its 45 minutes)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${CORDGRASP_BUILD_DIR:-$root/build}"
