@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
@@ -174,6 +176,22 @@ std::vector<PhaseSnapshot> shake_snapshots(SimParams params) {
   return shake;
 }
 
+/// Largest and smallest turn of link `root` about world axis `axis` [rad] over the snapshots
+/// after `start` up to the next segment end, relative to its orientation at `start`.
+std::pair<double, double> turn_range(std::vector<PhaseSnapshot>::const_iterator start,
+                                     std::vector<PhaseSnapshot>::const_iterator end, size_t root,
+                                     int axis) {
+  const Eigen::Matrix3d R_W0 = start->X_WL[root].linear();
+  double most = 0.0, least = 0.0;
+  for (auto it = start + 1; it != end && !it->phase_end; ++it) {
+    const Eigen::AngleAxisd turn(it->X_WL[root].linear() * R_W0.transpose());
+    const double about_axis = (turn.axis() * turn.angle())[axis];
+    most = std::max(most, about_axis);
+    least = std::min(least, about_axis);
+  }
+  return {most, least};
+}
+
 TEST(ValidateGrasp, QuickRockTiltsTheHandBothWaysAboutEachAxis) {
   /// The faded sine reaches its full amplitude once a quarter period after the fade-in.
   constexpr double kReachedAmplitude = 0.9;
@@ -188,14 +206,7 @@ TEST(ValidateGrasp, QuickRockTiltsTheHandBothWaysAboutEachAxis) {
       return s.phase_end && s.phase == before;
     });
     ASSERT_NE(start, shake.end()) << before;
-    const Eigen::Matrix3d R_W0 = start->X_WL[root].linear();
-    double most = 0.0, least = 0.0;
-    for (auto it = start + 1; it != shake.end() && !it->phase_end; ++it) {
-      const Eigen::AngleAxisd turn(it->X_WL[root].linear() * R_W0.transpose());
-      const double about_axis = (turn.axis() * turn.angle())[a];
-      most = std::max(most, about_axis);
-      least = std::min(least, about_axis);
-    }
+    const auto [most, least] = turn_range(start, shake.end(), root, a);
     EXPECT_GT(most, kReachedAmplitude * params.rock_angle_rad) << axes[a];
     EXPECT_LT(least, -kReachedAmplitude * params.rock_angle_rad) << axes[a];
   }
@@ -213,16 +224,9 @@ TEST(ValidateGrasp, FastRockTiltsTheHandBothWaysAboutEachAxis) {
     return s.phase_end && s.phase == "shake xyz";
   });
   ASSERT_NE(start, shake.end());
-  const Eigen::Matrix3d R_W0 = start->X_WL[root].linear();
   const char* axes[3] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) {
-    double most = 0.0, least = 0.0;
-    for (auto it = start + 1; it != shake.end() && !it->phase_end; ++it) {
-      const Eigen::AngleAxisd turn(it->X_WL[root].linear() * R_W0.transpose());
-      const double about_axis = (turn.axis() * turn.angle())[a];
-      most = std::max(most, about_axis);
-      least = std::min(least, about_axis);
-    }
+    const auto [most, least] = turn_range(start, shake.end(), root, a);
     EXPECT_GT(most, kReachedAmplitude * params.rock_angle_rad) << axes[a];
     EXPECT_LT(least, -kReachedAmplitude * params.rock_angle_rad) << axes[a];
   }
