@@ -9,6 +9,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "cordgrasp/core/balanced_contact_forces.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/sim/validate_grasp.h"
 #include "hand_multibody.h"
@@ -169,6 +170,8 @@ struct GraspSimulation::Impl {
   PhaseSnapshot snapshot(const std::string& phase) const;
   /// Starts phase `name` (its wall clock too) with gravity `g_W` [m/s²].
   void begin(PhaseResult& r, const std::string& name, const Eigen::Vector3d& g_W);
+  /// Makes the object immovable (zero linear and angular factors) or free again, at rest.
+  void set_object_fixed(bool fixed);
   /// Sets the world's gravity [m/s²].
   void set_gravity(const Eigen::Vector3d& g_W);
   /// Fills the pose change and contacts relative to `X_BO_reference`, classifies.
@@ -466,6 +469,15 @@ void GraspSimulation::Impl::begin(PhaseResult& r, const std::string& name,
   set_gravity(g_W);
 }
 
+void GraspSimulation::Impl::set_object_fixed(bool fixed) {
+  const btVector3 factor = fixed ? btVector3(0, 0, 0) : btVector3(1, 1, 1);
+  object->body->setLinearFactor(factor);
+  object->body->setAngularFactor(factor);
+  object->body->setLinearVelocity(btVector3(0, 0, 0));
+  object->body->setAngularVelocity(btVector3(0, 0, 0));
+  object->body->activate(true);
+}
+
 void GraspSimulation::Impl::set_gravity(const Eigen::Vector3d& g_W) {
   gravity = g_W;
   world->setGravity(to_bt(g_W));
@@ -579,16 +591,20 @@ PhaseResult GraspSimulation::settle() {
 
 Eigen::VectorXd GraspSimulation::Impl::squeeze_efforts() const {
   Eigen::VectorXd push = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(hand.joints.size()));
-  if (params.squeeze_direction == SqueezeDirection::kActor) {
+  std::vector<Eigen::Vector3d> forces;
+  if (params.squeeze_direction == SqueezeDirection::kBalanced) {
+    BalancedContactForces balanced = balanced_contact_forces(grasp.contacts, params.contact.mu);
+    if (balanced.within_cones()) forces = std::move(balanced.forces_O);
+  } else if (params.squeeze_direction == SqueezeDirection::kContactNormals) {
+    for (const Contact& c : grasp.contacts) forces.push_back(-c.n_O);
+  }
+  if (forces.empty()) {
     for (size_t a = 0; a < actor_joints.size(); ++a)
       push[actor_joints[a]] =
           actor_sign[a] * hand_body->effort_limit[static_cast<size_t>(actor_joints[a])];
     return push;
   }
-  // Contact normals: τ = f·Σ Jᵀ(−n), with the largest common force f that no actor joint's
-  // effort limit caps.
-  std::vector<Eigen::Vector3d> forces;
-  for (const Contact& c : grasp.contacts) forces.push_back(-c.n_O);
+  // τ = f·Σ Jᵀ f_c, with the largest common scale f that no actor joint's effort limit caps.
   const Eigen::VectorXd tau =
       contact_force_torques(hand, grasp.q, grasp.X_OB, grasp.contacts, forces);
   double force = std::numeric_limits<double>::infinity();
@@ -606,6 +622,7 @@ PhaseResult GraspSimulation::close() {
   PhaseResult r;
   s.begin(r, "close", Eigen::Vector3d::Zero());
   const int n = static_cast<int>(s.hand.joints.size());
+  if (s.params.object_fixed_in_close) s.set_object_fixed(true);
   // Reach: every driven joint follows a minimum-jerk path from where it is to the plan, all
   // arriving together, so the fingers meet the object at once at the planned contacts.
   const Eigen::VectorXd q0 = bullet::hand_joint_positions(*s.hand_body, n);
@@ -671,6 +688,7 @@ PhaseResult GraspSimulation::close() {
   if (r.outcome == Outcome::kSlipped) r.outcome = Outcome::kHeld;
   s.X_BO_ref = s.X_BO();
   s.closed = true;
+  if (s.params.object_fixed_in_close) s.set_object_fixed(false);
   // From now on the servos keep squeezing toward the same targets.
   return r;
 }

@@ -13,7 +13,8 @@ constexpr EnumName<ObjectShape> kObjectShapeNames[] = {
     {ObjectShape::kDecomposition, "decomposition"},
     {ObjectShape::kGImpact, "gimpact"}};
 constexpr EnumName<SqueezeDirection> kSqueezeDirectionNames[] = {
-    {SqueezeDirection::kActor, "actor"}, {SqueezeDirection::kContactNormals, "contacts"}};
+    {SqueezeDirection::kActor, "actor"}, {SqueezeDirection::kContactNormals, "contacts"},
+    {SqueezeDirection::kBalanced, "balanced"}};
 constexpr EnumName<Protocol> kProtocolNames[] = {{Protocol::kQuick, "quick"},
                                                  {Protocol::kThorough, "thorough"},
                                                  {Protocol::kFast, "fast"}};

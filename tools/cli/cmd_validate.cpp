@@ -99,10 +99,15 @@ void add_validate_command(CLI::App& app) {
       ->check(number_in(0.0, 3.2));
   cmd->add_option("--squeeze-direction", opt->job.squeeze_direction,
                   std::string("Squeeze: 'actor' (every finger joint closes with its full "
-                              "effort) or 'contacts' (the joints press the planned contacts "
-                              "along their normals with one common force) (default ") +
+                              "effort), 'contacts' (the joints press the planned contacts "
+                              "along their normals with one common force) or 'balanced' (the "
+                              "planned contacts are pressed by forces that cancel, so the "
+                              "object stays where it was planned) (default ") +
                       to_string(defaults.squeeze_direction) + ")")
-      ->check(one_of({"actor", "contacts"}));
+      ->check(one_of({"actor", "contacts", "balanced"}));
+  cmd->add_flag("--object-fixed-in-close", opt->job.object_fixed_in_close,
+                "The object cannot move while the hand closes (as if on a support) and is let "
+                "go when the lift starts");
   cmd->add_option("--effort-scale", opt->job.effort_scale,
                   "Multiply every joint effort limit (e.g. 0.5 for weaker motors)")
       ->check(number_in(1e-3, 100.0));

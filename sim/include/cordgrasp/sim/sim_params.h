@@ -34,9 +34,13 @@ enum class SqueezeDirection {
   kActor,
   /// The planned contacts are pressed along their normals by one force f: τ = f·Σ Jᵀ(−n).
   kContactNormals,
+  /// The planned contacts are pressed by forces whose sum and moment vanish
+  /// (balanced_contact_forces), scaled up to the first joint's effort limit: the object is not
+  /// pushed away from its planned pose. kActor where they leave a friction cone.
+  kBalanced,
 };
 
-/// "actor", "contacts".
+/// "actor", "contacts", "balanced".
 const char* to_string(SqueezeDirection direction);
 
 /// Parses the names of to_string(SqueezeDirection). @throws std::invalid_argument otherwise.
@@ -152,6 +156,9 @@ struct SimParams {
   double effort_scale = 1.0;
   /// Squeeze direction; along the contact normals held about as many grasps as kActor.
   SqueezeDirection squeeze_direction = SqueezeDirection::kActor;
+  /// close: the object cannot move while the hand reaches and squeezes (as if a support held
+  /// it), and is let go when the lift starts: the grasp tested is the planned one.
+  bool object_fixed_in_close = false;
   /// Squeeze as the spring above (true) or with full effort up to the rest point (false).
   bool compliant_squeeze = true;
   /// Joint servo gain: commanded speed = gain × error, capped [1/s]; stiff tracking.
@@ -258,6 +265,7 @@ struct SimParams {
     a->Visit(CORDGRASP_NVP(default_effort_Nm));
     a->Visit(CORDGRASP_NVP(default_effort_N));
     visit_fields(a, CORDGRASP_NVP(effort_scale), CORDGRASP_NVP(squeeze_direction),
+                 CORDGRASP_NVP(object_fixed_in_close),
                  CORDGRASP_NVP(compliant_squeeze), CORDGRASP_NVP(servo_gain_per_s),
                  CORDGRASP_NVP(hold_speed), CORDGRASP_NVP(armature_kgm2),
                  CORDGRASP_NVP(armature_kg), CORDGRASP_NVP(lock_passive_joints),
