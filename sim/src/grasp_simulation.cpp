@@ -598,7 +598,9 @@ Eigen::VectorXd GraspSimulation::Impl::squeeze_efforts() const {
   } else if (params.squeeze_direction == SqueezeDirection::kContactNormals) {
     for (const Contact& c : grasp.contacts) forces.push_back(-c.n_O);
   }
-  if (forces.empty()) {
+  // kActor, and kBalanced where no balanced forces exist: every actor joint at full effort.
+  // kContactNormals without planned contacts presses nothing.
+  if (params.squeeze_direction != SqueezeDirection::kContactNormals && forces.empty()) {
     for (size_t a = 0; a < actor_joints.size(); ++a)
       push[actor_joints[a]] =
           actor_sign[a] * hand_body->effort_limit[static_cast<size_t>(actor_joints[a])];
