@@ -2,6 +2,7 @@
 #include "cordgrasp/core/balanced_contact_forces.h"
 
 #include "cordgrasp/core/grasp_quality.h"
+#include "test_contacts.h"
 
 #include <gtest/gtest.h>
 
@@ -15,14 +16,6 @@ constexpr double kBalanceTol = 1e-9;
 constexpr double kMu = 0.5;
 /// Force-closure grasps whose balanced forces must lie within their cones [-].
 constexpr double kMinSqueezedFraction = 0.9;
-
-Contact contact(const Eigen::Vector3d& p, const Eigen::Vector3d& n) {
-  Contact c;
-  c.link = 0;
-  c.p_O = p;
-  c.n_O = n.normalized();
-  return c;
-}
 
 /// Net force and moment about the origin of `forces` at `contacts`.
 Eigen::Matrix<double, 6, 1> net_wrench(const std::vector<Contact>& contacts,

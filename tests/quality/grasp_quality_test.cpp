@@ -10,20 +10,13 @@
 #include <random>
 
 #include "cordgrasp/core/shapes.h"
+#include "test_contacts.h"
 
 namespace cordgrasp {
 namespace {
 
 constexpr double kAnalyticTol = 1e-6;
 constexpr double kExactTol = 1e-9;
-
-Contact contact(const Eigen::Vector3d& p, const Eigen::Vector3d& n) {
-  Contact c;
-  c.link = 0;
-  c.p_O = p;
-  c.n_O = n.normalized();
-  return c;
-}
 
 WrenchSpaceObject unit_object(double torque_scale = 1.0) {
   WrenchSpaceObject o;
