@@ -624,7 +624,7 @@ PhaseResult GraspSimulation::close() {
   PhaseResult r;
   s.begin(r, "close", Eigen::Vector3d::Zero());
   const int n = static_cast<int>(s.hand.joints.size());
-  if (s.params.object_fixed_in_close) s.set_object_fixed(true);
+  if (s.params.object_fixed != ObjectFixed::kNever) s.set_object_fixed(true);
   // Reach: every driven joint follows a minimum-jerk path from where it is to the plan, all
   // arriving together, so the fingers meet the object at once at the planned contacts.
   const Eigen::VectorXd q0 = bullet::hand_joint_positions(*s.hand_body, n);
@@ -654,6 +654,7 @@ PhaseResult GraspSimulation::close() {
     s.step(X_WB0);
   }
   s.qd_feedforward.setZero();
+  if (s.params.object_fixed == ObjectFixed::kReach) s.set_object_fixed(false);
   // Squeeze: every pushing actor joint becomes a spring with its rest point `squeeze` past the
   // plan in the direction it pushes (not clamped: the joint limits stop the finger) and
   // stiffness effort / squeeze, so it pushes with its squeeze effort at the planned value and
@@ -690,7 +691,7 @@ PhaseResult GraspSimulation::close() {
   if (r.outcome == Outcome::kSlipped) r.outcome = Outcome::kHeld;
   s.X_BO_ref = s.X_BO();
   s.closed = true;
-  if (s.params.object_fixed_in_close) s.set_object_fixed(false);
+  if (s.params.object_fixed == ObjectFixed::kClose) s.set_object_fixed(false);
   // From now on the servos keep squeezing toward the same targets.
   return r;
 }

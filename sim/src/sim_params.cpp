@@ -15,6 +15,9 @@ constexpr EnumName<ObjectShape> kObjectShapeNames[] = {
 constexpr EnumName<SqueezeDirection> kSqueezeDirectionNames[] = {
     {SqueezeDirection::kActor, "actor"}, {SqueezeDirection::kContactNormals, "contacts"},
     {SqueezeDirection::kBalanced, "balanced"}};
+constexpr EnumName<ObjectFixed> kObjectFixedNames[] = {{ObjectFixed::kNever, "never"},
+                                                       {ObjectFixed::kReach, "reach"},
+                                                       {ObjectFixed::kClose, "close"}};
 constexpr EnumName<Protocol> kProtocolNames[] = {{Protocol::kQuick, "quick"},
                                                  {Protocol::kThorough, "thorough"},
                                                  {Protocol::kFast, "fast"}};
@@ -33,6 +36,11 @@ const char* to_string(SqueezeDirection direction) {
 }
 SqueezeDirection parse_squeeze_direction(const std::string& text) {
   return parse_enum(text, kSqueezeDirectionNames, "squeeze direction");
+}
+
+const char* to_string(ObjectFixed fixed) { return enum_to_string(fixed, kObjectFixedNames); }
+ObjectFixed parse_object_fixed(const std::string& text) {
+  return parse_enum(text, kObjectFixedNames, "object fixed");
 }
 
 const char* to_string(WorldFrame frame) { return enum_to_string(frame, kWorldFrameNames); }

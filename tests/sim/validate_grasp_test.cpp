@@ -301,6 +301,28 @@ TEST(ValidateGrasp, ContactSqueezePressesThePlannedContactsOnly) {
   EXPECT_NE(b.outcome, Outcome::kUnstable);
 }
 
+TEST(ValidateGrasp, ObjectFixedInCloseKeepsTheBoxWhereAnOffCentrePinchPushesIt) {
+  // GCP 5 mm off the centre along the pads' axis: one pad is planned 5 mm inside the box, so
+  // a free box is pushed while the hand closes; held still during the close, it is not.
+  constexpr double kOffCentre_m = 0.005;
+  // Bullet's position correction still moves a body with zero linear factor by ~1 µm.
+  constexpr double kFixedShiftTolerance_m = 1e-5;
+  const Grasp g = test::top_down_pinch(gripper(), Eigen::Vector3d(kOffCentre_m, 0, 0),
+                                       0.5 * kBoxSide_m, kOpenGripper_m);
+  const SimTests lift_only{true, false, false};
+  SimParams params = gripper_params();
+  ASSERT_EQ(params.object_fixed, ObjectFixed::kNever);
+  const SimResult free = validate_grasp(box(), gripper(), g, params, lift_only);
+  EXPECT_GT(free.phase("close")->translation_m, 0.5 * kOffCentre_m);
+  params.object_fixed = ObjectFixed::kClose;
+  const SimResult fixed = validate_grasp(box(), gripper(), g, params, lift_only);
+  EXPECT_FALSE(fixed.preshape_overlap);
+  EXPECT_LT(fixed.phase("close")->translation_m, kFixedShiftTolerance_m);
+  EXPECT_TRUE(fixed.phase("close")->in_contact);
+  // Let go when the lift starts: the lift runs with the box free (gravity pulls it).
+  EXPECT_GT(fixed.phase("lift")->steps, 0);
+}
+
 TEST(ValidateGrasp, FlagsAPreshapeHandPlacedIntoTheObject) {
   const SimTests lift_only{true, false, false};
   const SimResult clear = validate_grasp(box(), gripper(), centre_pinch(), gripper_params(), lift_only);
@@ -583,9 +605,16 @@ TEST(ApplyProtocol, QuickIsTheDefaultAndThoroughTheLongProtocol) {
 }
 
 TEST(SqueezeDirectionFromString, RoundTripsEveryDirection) {
-  for (SqueezeDirection d : {SqueezeDirection::kActor, SqueezeDirection::kContactNormals})
+  for (SqueezeDirection d : {SqueezeDirection::kActor, SqueezeDirection::kContactNormals,
+                             SqueezeDirection::kBalanced})
     EXPECT_EQ(parse_squeeze_direction(to_string(d)), d);
   EXPECT_THROW(parse_squeeze_direction("normals"), std::invalid_argument);
+}
+
+TEST(ObjectFixedFromString, RoundTripsEveryValue) {
+  for (ObjectFixed f : {ObjectFixed::kNever, ObjectFixed::kReach, ObjectFixed::kClose})
+    EXPECT_EQ(parse_object_fixed(to_string(f)), f);
+  EXPECT_THROW(parse_object_fixed("lift"), std::invalid_argument);
 }
 
 }  // namespace

@@ -105,9 +105,13 @@ void add_validate_command(CLI::App& app) {
                               "object stays where it was planned) (default ") +
                       to_string(defaults.squeeze_direction) + ")")
       ->check(one_of({"actor", "contacts", "balanced"}));
-  cmd->add_flag("--object-fixed-in-close", opt->job.object_fixed_in_close,
-                "The object cannot move while the hand closes (as if on a support) and is let "
-                "go when the lift starts");
+  cmd->add_option("--object-fixed", opt->job.object_fixed,
+                  std::string("Hold the object in place while the hand closes, as if on a "
+                              "support: 'never', during the 'reach' (let go when the squeeze "
+                              "starts) or the whole 'close' (let go when the lift starts) "
+                              "(default ") +
+                      to_string(defaults.object_fixed) + ")")
+      ->check(one_of({"never", "reach", "close"}));
   cmd->add_option("--effort-scale", opt->job.effort_scale,
                   "Multiply every joint effort limit (e.g. 0.5 for weaker motors)")
       ->check(number_in(1e-3, 100.0));

@@ -87,7 +87,7 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   if (opt.squeeze_rad) params.squeeze_rad = *opt.squeeze_rad;
   if (!opt.squeeze_direction.empty())
     params.squeeze_direction = parse_squeeze_direction(opt.squeeze_direction);
-  if (opt.object_fixed_in_close) params.object_fixed_in_close = true;
+  if (!opt.object_fixed.empty()) params.object_fixed = parse_object_fixed(opt.object_fixed);
   if (opt.effort_scale) params.effort_scale = *opt.effort_scale;
   if (opt.concavity) params.decomposition.concavity = *opt.concavity;
   if (opt.hacd_triangles) params.decomposition.max_input_triangles = *opt.hacd_triangles;

@@ -51,6 +51,22 @@ inline SqueezeDirection squeeze_direction_from_string(const std::string& text) {
   return parse_squeeze_direction(text);
 }
 
+/// How long the object is held in place (as if by a support) while the hand closes.
+enum class ObjectFixed {
+  /// Never: the fingers may push the object while they reach and squeeze.
+  kNever,
+  /// During the reach; let go when the squeeze starts, so that it seats the object.
+  kReach,
+  /// During the reach and the squeeze; let go when the lift starts.
+  kClose,
+};
+
+/// "never", "reach", "close".
+const char* to_string(ObjectFixed fixed);
+
+/// Parses the names of to_string(ObjectFixed). @throws std::invalid_argument otherwise.
+ObjectFixed parse_object_fixed(const std::string& text);
+
 /// Where the world frame W is put relative to the object frame O (gravity is always −z_W).
 enum class WorldFrame {
   /// W rotated so that the GCP approach axis +z_G points down (−z_W): lift against gravity.
@@ -156,9 +172,8 @@ struct SimParams {
   double effort_scale = 1.0;
   /// Squeeze direction; along the contact normals held about as many grasps as kActor.
   SqueezeDirection squeeze_direction = SqueezeDirection::kActor;
-  /// close: the object cannot move while the hand reaches and squeezes (as if a support held
-  /// it), and is let go when the lift starts: the grasp tested is the planned one.
-  bool object_fixed_in_close = false;
+  /// close: how long the object is held in place while the hand closes.
+  ObjectFixed object_fixed = ObjectFixed::kNever;
   /// Squeeze as the spring above (true) or with full effort up to the rest point (false).
   bool compliant_squeeze = true;
   /// Joint servo gain: commanded speed = gain × error, capped [1/s]; stiff tracking.
@@ -265,7 +280,7 @@ struct SimParams {
     a->Visit(CORDGRASP_NVP(default_effort_Nm));
     a->Visit(CORDGRASP_NVP(default_effort_N));
     visit_fields(a, CORDGRASP_NVP(effort_scale), CORDGRASP_NVP(squeeze_direction),
-                 CORDGRASP_NVP(object_fixed_in_close),
+                 CORDGRASP_NVP(object_fixed),
                  CORDGRASP_NVP(compliant_squeeze), CORDGRASP_NVP(servo_gain_per_s),
                  CORDGRASP_NVP(hold_speed), CORDGRASP_NVP(armature_kgm2),
                  CORDGRASP_NVP(armature_kg), CORDGRASP_NVP(lock_passive_joints),

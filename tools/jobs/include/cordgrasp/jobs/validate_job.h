@@ -44,7 +44,7 @@ struct ValidateJobParams {
   std::optional<double> concavity;
   std::optional<double> squeeze_rad;
   std::string squeeze_direction;
-  bool object_fixed_in_close = false;
+  std::string object_fixed;  ///< "never", "reach", "close" (SimParams::object_fixed); "": default
   std::optional<double> effort_scale;
   std::optional<int> hacd_triangles;
   std::optional<int> hull_vertices;
