@@ -91,8 +91,8 @@ WrenchHull wrench_hull(const std::vector<Wrench>& wrenches);
 struct GraspQuality {
   bool force_closure = false;
   double epsilon = 0.0;  ///< textbook: origin→hull distance; simox: GWS/OWS ratio; 0 if not FC
-  WrenchHull hull;       ///< raw hull figures (not computed, valid = false, when a linear
-                         ///< program already showed the origin outside: textbook mode)
+  WrenchHull hull;       ///< raw hull figures (valid = false: fewer than 2 contacts or a
+                         ///< degenerate hull)
 };
 
 /// Force-closure test and ε of contacts on an object (docs/algorithm.md §8). Fewer than 2
