@@ -14,6 +14,10 @@ void add_validation_options(CLI::App* cmd, ValidationParams& v) {
                   "A candidate is accepted when held in at least this many trials")
       ->check(whole_number_in(1, 1000))
       ->capture_default_str();
+  cmd->add_option("--require-held-as-planned", v.require_held_as_planned,
+                  "A candidate must hold in its first trial, as planned (the grasp plan.json "
+                  "stores), as well as in --min-held trials in all (true or false)")
+      ->capture_default_str();
   cmd->add_option("--budget", v.budget_s,
                   "CPU budget of planning and physics together, all threads [s] (replaces "
                   "--time-limit)")

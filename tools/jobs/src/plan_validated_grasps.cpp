@@ -219,6 +219,13 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
           fixed(1e3 * (close ? close->translation_m : 0.0), 0) + " mm");
       continue;
     }
+    if (v.require_held_as_planned && !first.held()) {
+      vs.physics_s += seconds_since(physics_start);
+      const PhaseResult* failed = first.failed_phase();
+      say("candidate " + std::to_string(candidate) + ": not held as planned (" +
+          to_string(first.outcome) + (failed ? " in " + failed->name : std::string()) + ")");
+      continue;
+    }
     // Nudged trials, `jobs` at a time, until the verdict is decided; the record keeps the
     // trials a one-at-a-time run would have made, so it does not depend on `jobs`.
     vs.held_as_planned += first.held() ? 1 : 0;

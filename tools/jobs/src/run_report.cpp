@@ -57,7 +57,8 @@ std::string run_report_markdown(const RunReport& rep) {
   if (plan.validation) {
     const ValidationParams& v = plan.validation->params;
     md << "- Validated planning: accepted when held in ≥ " << v.min_held << " of " << v.trials
-       << " trials (" << v.tests << ", " << to_string(v.protocol) << " protocol), squeeze shift "
+       << " trials" << (v.require_held_as_planned ? ", the first as planned" : "") << " ("
+       << v.tests << ", " << to_string(v.protocol) << " protocol), squeeze shift "
        << "limit " << num(1e3 * v.squeeze_shift_limit_m, "%.0f") << " mm, grasps differ by ≥ "
        << num(1e3 * v.min_gcp_distance_m, "%.0f") << " mm or ≥ "
        << num(v.min_hand_turn_deg, "%.0f") << "°, budget " << num(v.budget_s) << " s\n";

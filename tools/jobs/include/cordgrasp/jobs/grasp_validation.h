@@ -22,6 +22,9 @@ struct ValidationParams {
   Protocol protocol = Protocol::kQuick;  ///< physics protocol preset of every trial
   int trials = 3;                        ///< trials per candidate: as planned, then nudged
   int min_held = 2;                      ///< accepted when held in at least this many trials
+  /// ...of which the first, the grasp as planned (the one plan.json stores), must be one:
+  /// a grasp that fails as planned fails again in every later `validate` of the plan.
+  bool require_held_as_planned = true;
   /// Cap on the CPU time of planning and physics together (all threads of the process) [s];
   /// the planner's own time limit (PlanParams::time_limit_s) is ignored.
   double budget_s = 30.0;
@@ -39,7 +42,8 @@ struct ValidationParams {
   template <typename Archive>
   void Serialize(Archive* a) {
     visit_fields(a, CORDGRASP_NVP(tests), CORDGRASP_NVP(protocol), CORDGRASP_NVP(trials),
-                 CORDGRASP_NVP(min_held), CORDGRASP_NVP(budget_s),
+                 CORDGRASP_NVP(min_held), CORDGRASP_NVP(require_held_as_planned),
+                 CORDGRASP_NVP(budget_s),
                  CORDGRASP_NVP(squeeze_shift_limit_m), CORDGRASP_NVP(min_gcp_distance_m),
                  CORDGRASP_NVP(min_hand_turn_deg), CORDGRASP_NVP(perturbation),
                  CORDGRASP_NVP(trial_seed));

@@ -22,7 +22,9 @@ using ValidatedPlanProgress = std::function<void(const std::string&)>;
 /// skips candidates that do not differ from an accepted one (grasps_differ), simulates the
 /// rest as planned (early rejection by the squeeze shift), then up to `trials` − 1 more times
 /// nudged (perturbed_grasp, seed trial_seed + 1000·c + t for candidate c, trial t), `jobs`
-/// trials at a time until the verdict is decided, and accepts those held in ≥ min_held trials,
+/// trials at a time until the verdict is decided, and accepts those held in ≥ min_held trials
+/// (with require_held_as_planned, only if the first, as planned, is one of them: else the
+/// candidate is dropped after its first trial),
 /// until enough are accepted or budget_s is spent (checked before each candidate).
 /// `sim` gives the physics (its protocol preset and contact model are replaced by v.protocol
 /// and the plan's; mass and density overrides are kept). The document holds only accepted
