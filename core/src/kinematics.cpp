@@ -121,4 +121,40 @@ Eigen::VectorXd contact_force_torques(const HandModel& hand, const Eigen::Vector
   return tau;
 }
 
+Eigen::VectorXd contact_levers(const HandModel& hand, const Eigen::VectorXd& q,
+                               const Eigen::Isometry3d& X_OB,
+                               const std::vector<Contact>& contacts) {
+  check_size(hand, q, "contact_levers");
+  const std::vector<Eigen::Isometry3d> X_OL = link_poses(hand, apply_couplings(hand, q), X_OB);
+  Eigen::VectorXd lever = Eigen::VectorXd::Zero(q.size());
+  for (const Contact& c : contacts) {
+    if (c.link < 0 || c.link >= static_cast<int>(hand.links.size()))
+      throw std::invalid_argument("contact_levers: contact on link " + std::to_string(c.link) +
+                                  ", hand '" + hand.name + "' has " +
+                                  std::to_string(hand.links.size()) + " links");
+    for (int j = hand.links[c.link].parent_joint; j >= 0;
+         j = hand.links[hand.joints[j].parent_link].parent_joint) {
+      const Joint& joint = hand.joints[j];
+      const Eigen::Isometry3d X_OJ = X_OL[joint.parent_link] * joint.X_PJ;
+      const Eigen::Vector3d axis = (X_OJ.linear() * joint.axis).normalized();
+      double arm = 0.0;
+      switch (joint.type) {
+        case JointType::kRevolute:
+        case JointType::kContinuous: {
+          const Eigen::Vector3d r = c.p_O - X_OJ.translation();
+          arm = (r - axis * axis.dot(r)).norm();
+          break;
+        }
+        case JointType::kPrismatic:
+          arm = 1.0;
+          break;
+        case JointType::kFixed:
+          break;
+      }
+      lever[j] = std::max(lever[j], arm);
+    }
+  }
+  return lever;
+}
+
 }  // namespace cordgrasp

@@ -28,6 +28,8 @@ constexpr int kHandGroup = 2;
 /// Joint torque per newton of contact force below which a joint does not press a contact
 /// (a lever of 1 µm) [N·m/N].
 constexpr double kNegligibleTorquePerNewton = 1e-6;
+/// Friction coefficient below which the weight-scaled squeeze stops growing [-].
+constexpr double kMinFrictionForForce = 0.1;
 
 double angle_of(const Eigen::Matrix3d& R) { return Eigen::AngleAxisd(R).angle(); }
 
@@ -166,6 +168,9 @@ struct GraspSimulation::Impl {
   /// Squeeze effort of every actor joint [N·m or N], signed (+: toward larger q); 0: holds
   /// the plan (SimParams::squeeze_direction).
   Eigen::VectorXd squeeze_efforts() const;
+  /// `push` scaled down, all actor joints alike, to the weight-proportional grasp force of
+  /// SimParams::squeeze_weight_factor (unchanged when the factor is 0 or the limits are weaker).
+  Eigen::VectorXd scaled_to_weight(Eigen::VectorXd push) const;
   /// Current world state labelled `phase` (GraspSimulation::snapshot).
   PhaseSnapshot snapshot(const std::string& phase) const;
   /// Starts phase `name` (its wall clock too) with gravity `g_W` [m/s²].
@@ -604,7 +609,7 @@ Eigen::VectorXd GraspSimulation::Impl::squeeze_efforts() const {
     for (size_t a = 0; a < actor_joints.size(); ++a)
       push[actor_joints[a]] =
           actor_sign[a] * hand_body->effort_limit[static_cast<size_t>(actor_joints[a])];
-    return push;
+    return scaled_to_weight(push);
   }
   // τ = f·Σ Jᵀ f_c, with the largest common scale f that no actor joint's effort limit caps.
   const Eigen::VectorXd tau =
@@ -616,6 +621,26 @@ Eigen::VectorXd GraspSimulation::Impl::squeeze_efforts() const {
   if (!std::isfinite(force)) return push;  // no contact on a finger: nothing to press
   for (const int j : actor_joints)
     if (std::abs(tau[j]) > kNegligibleTorquePerNewton) push[j] = force * tau[j];
+  return scaled_to_weight(push);
+}
+
+Eigen::VectorXd GraspSimulation::Impl::scaled_to_weight(Eigen::VectorXd push) const {
+  if (params.squeeze_weight_factor <= 0.0 || grasp.contacts.empty()) return push;
+  const double force_N = params.squeeze_weight_factor * object->body->getMass() *
+                         params.gravity_mps2 / std::max(params.contact.mu, kMinFrictionForForce);
+  Eigen::VectorXd lever = contact_levers(hand, grasp.q, grasp.X_OB, grasp.contacts);
+  // A coupled set pushes with its master's drive, which carries the mimic joints' torques
+  // too (× multiplier, as contact_force_torques pools them).
+  for (size_t j = 0; j < hand.joints.size(); ++j)
+    if (const auto& m = hand.joints[j].mimic)
+      lever[m->master_joint] += std::abs(m->multiplier) * lever[static_cast<Eigen::Index>(j)];
+  // One scale for all actors (the hand's own balance of efforts stays): the smallest at which
+  // every joint with a planned contact still presses it with force_N.
+  double scale = 0.0;
+  for (const int j : actor_joints)
+    if (push[j] != 0.0 && lever[j] > 0.0)
+      scale = std::max(scale, force_N * lever[j] / std::abs(push[j]));
+  if (scale > 0.0 && scale < 1.0) push *= scale;
   return push;
 }
 

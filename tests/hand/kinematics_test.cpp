@@ -1,4 +1,5 @@
-// apply_couplings, clamp_to_limits, link_poses, root_pose_for_gcp, contact_force_torques
+// apply_couplings, clamp_to_limits, link_poses, root_pose_for_gcp, contact_force_torques,
+// contact_levers
 // on the shipped and test hands.
 #include "cordgrasp/core/kinematics.h"
 
@@ -179,6 +180,37 @@ TEST(ContactForceTorques, ContactOnAnUnknownLinkOrAMissingForceThrows) {
                std::invalid_argument);
   c.link = h.root_link;
   EXPECT_THROW(contact_force_torques(h, h.preshape, I, {c}, {}), std::invalid_argument);
+}
+
+TEST(ContactLevers, BoundTheTorqueOfAUnitForceAtAContactAndReachItAcrossTheArm) {
+  const HandModel h = load_hand("cordgrasp_sah");
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(h.joints.size()));
+  for (size_t j = 0; j < h.joints.size(); ++j)
+    if (h.joints[j].type == JointType::kRevolute)
+      q[j] = 0.4 * h.joints[j].lower + 0.6 * h.joints[j].upper;
+  Eigen::Isometry3d X_OB = Eigen::Isometry3d::Identity();
+  X_OB.rotate(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, -1, 2).normalized()));
+  X_OB.pretranslate(Eigen::Vector3d(-0.03, 0.05, 0.08));
+  const auto X_OL = link_poses(h, apply_couplings(h, q), X_OB);
+  Contact c;
+  c.link = find_link(h, "index_distal_link");
+  c.p_O = X_OL[c.link] * Eigen::Vector3d(0.012, -0.003, 0.02);
+  const Eigen::VectorXd lever = contact_levers(h, q, X_OB, {c});
+  // A joint upstream of the contact with no mimic slave: its torque is the contact's alone.
+  const int j = find_joint(h, "index_proximal");
+  ASSERT_GT(lever[j], 0.0);
+  const Eigen::Isometry3d X_OJ = X_OL[h.joints[j].parent_link] * h.joints[j].X_PJ;
+  const Eigen::Vector3d axis = X_OJ.linear() * h.joints[j].axis;
+  const Eigen::Vector3d across = axis.cross(c.p_O - X_OJ.translation()).normalized();
+  EXPECT_NEAR(std::abs(contact_force_torques(h, q, X_OB, {c}, {across})[j]), lever[j], 1e-12);
+  for (const Eigen::Vector3d& f : {Eigen::Vector3d(1, 2, 3).normalized(),
+                                   Eigen::Vector3d(-2, 0.5, 1).normalized()})
+    EXPECT_LE(std::abs(contact_force_torques(h, q, X_OB, {c}, {f})[j]), lever[j] + 1e-12);
+  // Joints of other fingers carry none of it.
+  EXPECT_EQ(lever[find_joint(h, "thumb_proximal")], 0.0);
+  EXPECT_EQ(lever[find_joint(h, "ring_proximal")], 0.0);
+  c.link = static_cast<int>(h.links.size());
+  EXPECT_THROW(contact_levers(h, q, X_OB, {c}), std::invalid_argument);
 }
 
 }  // namespace

@@ -27,6 +27,9 @@ constexpr double kHeavyBox_kg = 5.0;           ///< weight 49 N
 constexpr double kWeakMotors = 0.45;           ///< 36 N of friction < 49 N: slips
 constexpr double kStrongMotors = 0.8;          ///< 64 N of friction > 49 N: holds
 constexpr double kInertiaRelTol = 1e-9;
+/// A held pinch's squeeze spring is a little short of its squeeze force (the pads sit up to a
+/// margin inside the faces): relative tolerance on the grip force in lift [-].
+constexpr double kGripForceRelTol = 0.1;
 /// The gripper's flat pads touch a face over a patch: soft-finger contacts of this radius, as
 /// the planner models two-finger grippers (tools/hold_rates.sh). With point contacts nothing
 /// but numerical noise keeps the pinched box from spinning about the line through the pads
@@ -376,6 +379,48 @@ TEST(ValidateGrasp, HeavyBoxSlipsWhenFrictionFromTheGripIsBelowItsWeightOnly) {
   params.effort_scale = kStrongMotors;
   const SimResult strong = validate_grasp(box(), gripper(), centre_pinch(), params, lift_only);
   EXPECT_EQ(strong.outcome, Outcome::kHeld);
+}
+
+TEST(ValidateGrasp, GripForceFollowsTheWeightUpToTheMotorsAndStillHolds) {
+  // The pads press the box with squeeze_weight_factor · m·g / μ while that is below their
+  // URDF effort, and with the effort limit otherwise or when the factor is 0.
+  const SimTests lift_only{true, false, false};
+  const int j = find_joint(gripper(), "left_finger_joint");
+  const auto lift_grip_N = [&](const SimResult& r) {
+    const PhaseResult* lift = r.phase("lift");
+    return lift ? std::abs(lift->joint_efforts[static_cast<size_t>(j)]) : 0.0;
+  };
+  // The planned contacts: one on each pad (a prismatic joint's lever does not depend on where).
+  Grasp pinch = centre_pinch();
+  const auto X_OL = link_poses(gripper(), pinch.q, pinch.X_OB);
+  for (const Joint& joint : gripper().joints)
+    if (joint.type == JointType::kPrismatic) {
+      Contact c;
+      c.link = joint.child_link;
+      c.p_O = X_OL[static_cast<size_t>(c.link)].translation();
+      pinch.contacts.push_back(c);
+    }
+  ASSERT_EQ(pinch.contacts.size(), 2u);
+  SimParams params = gripper_params();
+  ASSERT_GT(params.squeeze_weight_factor, 0.0);
+  const SimResult light = validate_grasp(box(), gripper(), pinch, params, lift_only);
+  EXPECT_EQ(light.outcome, Outcome::kHeld);
+  // Two pads, each pressing with the weight-scaled force, on the master's pooled drive.
+  const double weight_grip_N = 2.0 * params.squeeze_weight_factor * light.object.mass_kg *
+                               params.gravity_mps2 / params.contact.mu;
+  params.squeeze_weight_factor = 0.0;
+  const SimResult full = validate_grasp(box(), gripper(), pinch, params, lift_only);
+  EXPECT_EQ(full.outcome, Outcome::kHeld);
+  ASSERT_LT(weight_grip_N, 0.5 * lift_grip_N(full)) << "the box must be light for this gripper";
+  EXPECT_NEAR(lift_grip_N(light), weight_grip_N, kGripForceRelTol * weight_grip_N);
+  // A heavy box gets the full efforts, with or without the factor.
+  params.mass_kg = kHeavyBox_kg;
+  const SimResult heavy_full = validate_grasp(box(), gripper(), pinch, params, lift_only);
+  params.squeeze_weight_factor = SimParams{}.squeeze_weight_factor;
+  const SimResult heavy = validate_grasp(box(), gripper(), pinch, params, lift_only);
+  EXPECT_EQ(heavy.outcome, Outcome::kHeld);
+  EXPECT_NEAR(lift_grip_N(heavy), lift_grip_N(heavy_full),
+              kGripForceRelTol * lift_grip_N(heavy_full));
 }
 
 TEST(ValidateGrasp, SamePlanAndParametersGiveIdenticalResults) {

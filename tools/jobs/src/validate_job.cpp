@@ -89,6 +89,7 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
     params.squeeze_direction = parse_squeeze_direction(opt.squeeze_direction);
   if (!opt.object_fixed.empty()) params.object_fixed = parse_object_fixed(opt.object_fixed);
   if (opt.effort_scale) params.effort_scale = *opt.effort_scale;
+  if (opt.squeeze_weight_factor) params.squeeze_weight_factor = *opt.squeeze_weight_factor;
   if (opt.concavity) params.decomposition.concavity = *opt.concavity;
   if (opt.hacd_triangles) params.decomposition.max_input_triangles = *opt.hacd_triangles;
   if (opt.hull_vertices) params.decomposition.max_hull_vertices = *opt.hull_vertices;

@@ -42,4 +42,14 @@ Eigen::VectorXd contact_force_torques(const HandModel& hand, const Eigen::Vector
                                       const std::vector<Contact>& contacts,
                                       const std::vector<Eigen::Vector3d>& forces_O);
 
+/// Lever of every joint on the planned contacts, at joint vector q (couplings applied here),
+/// the root link at X_OB: the largest distance from a revolute joint's axis to a contact on its
+/// subtree [m], 1 for a prismatic joint with a contact on its subtree [-], 0 for joints with
+/// none. A joint pushing with effort F·lever presses each of its contacts with at least F.
+/// Mimic joints' levers are their own (not pooled). Used by the physics squeeze.
+/// @throws std::invalid_argument when q has the wrong size or a contact names no link.
+Eigen::VectorXd contact_levers(const HandModel& hand, const Eigen::VectorXd& q,
+                               const Eigen::Isometry3d& X_OB,
+                               const std::vector<Contact>& contacts);
+
 }  // namespace cordgrasp

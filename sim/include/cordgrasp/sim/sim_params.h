@@ -170,6 +170,11 @@ struct SimParams {
   double default_effort_N = 50.0;
   /// Multiplies every effort limit [-]; 1: the URDF's efforts.
   double effort_scale = 1.0;
+  /// Grasp force in proportion to the object's weight: the squeeze efforts (kept while lifting
+  /// and shaking) are scaled down, all actor joints alike, to the smallest fraction at which
+  /// every joint with a planned contact still presses it with this × m·g / μ (its lever:
+  /// contact_levers); never up. 0: the effort limits alone [-].
+  double squeeze_weight_factor = 30.0;
   /// Squeeze direction; along the contact normals held about as many grasps as kActor.
   SqueezeDirection squeeze_direction = SqueezeDirection::kActor;
   /// close: how long the object is held in place while the hand closes.
@@ -279,7 +284,8 @@ struct SimParams {
                  CORDGRASP_NVP(squeeze_rad), CORDGRASP_NVP(squeeze_m));
     a->Visit(CORDGRASP_NVP(default_effort_Nm));
     a->Visit(CORDGRASP_NVP(default_effort_N));
-    visit_fields(a, CORDGRASP_NVP(effort_scale), CORDGRASP_NVP(squeeze_direction),
+    visit_fields(a, CORDGRASP_NVP(effort_scale), CORDGRASP_NVP(squeeze_weight_factor),
+                 CORDGRASP_NVP(squeeze_direction),
                  CORDGRASP_NVP(object_fixed),
                  CORDGRASP_NVP(compliant_squeeze), CORDGRASP_NVP(servo_gain_per_s),
                  CORDGRASP_NVP(hold_speed), CORDGRASP_NVP(armature_kgm2),

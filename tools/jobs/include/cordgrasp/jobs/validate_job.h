@@ -46,6 +46,7 @@ struct ValidateJobParams {
   std::string squeeze_direction;
   std::string object_fixed;  ///< "never", "reach", "close" (SimParams::object_fixed); "": default
   std::optional<double> effort_scale;
+  std::optional<double> squeeze_weight_factor;  ///< SimParams::squeeze_weight_factor
   std::optional<int> hacd_triangles;
   std::optional<int> hull_vertices;
   bool warmstart = false;
