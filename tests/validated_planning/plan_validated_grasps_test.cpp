@@ -15,6 +15,7 @@
 
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
+#include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/validate_plan.h"
 #include "test_paths.h"
@@ -96,10 +97,13 @@ TEST(PlanValidatedGrasps, AcceptedGraspsDifferPairwiseByTheDiversityThreshold) {
   const PlanDocument plan = box.plan();
   ASSERT_GE(plan.grasps.size(), 2u);
   EXPECT_GT(plan.validation->stats.similar, 0);
+  const double min_gcp_m =
+      min_gcp_distance_m(box.v, bounding_radius(box.mesh, vertex_mean(box.mesh)));
+  ASSERT_GE(min_gcp_m, box.v.min_gcp_distance_m);
   for (size_t a = 0; a < plan.grasps.size(); ++a)
     for (size_t b = a + 1; b < plan.grasps.size(); ++b) {
       const GraspPoseDistance d = grasp_pose_distance(plan.grasps[a], plan.grasps[b]);
-      EXPECT_TRUE(d.gcp_m >= box.v.min_gcp_distance_m ||
+      EXPECT_TRUE(d.gcp_m >= min_gcp_m ||
                   d.hand_turn_rad >= box.v.min_hand_turn_deg * M_PI / 180.0)
           << a << "," << b << ": " << d.gcp_m << " m, " << d.hand_turn_rad << " rad";
     }
@@ -130,17 +134,24 @@ TEST(PlanValidatedGrasps, ValidationRecordRoundTripsThroughPlanJsonAndIsReadStri
 }
 
 TEST(GraspsDiffer, ByGcpDistanceOrHandTurn) {
-  ValidationParams v;  // 1 cm, 20°
+  ValidationParams v;  // 1 cm or a quarter of the radius, 20°
+  constexpr double kSmallObjectRadius_m = 0.02;  // a quarter is 5 mm: 1 cm counts
+  constexpr double kLargeObjectRadius_m = 0.08;  // a quarter is 2 cm
   Grasp a, b;
-  EXPECT_FALSE(grasps_differ(a, b, v));
+  EXPECT_FALSE(grasps_differ(a, b, v, kSmallObjectRadius_m));
   b.X_OG.translation() = Eigen::Vector3d(0.009, 0, 0);
   b.X_OB.linear() = Eigen::AngleAxisd(19.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ()).matrix();
-  EXPECT_FALSE(grasps_differ(a, b, v));
+  EXPECT_FALSE(grasps_differ(a, b, v, kSmallObjectRadius_m));
   b.X_OG.translation() = Eigen::Vector3d(0.011, 0, 0);
-  EXPECT_TRUE(grasps_differ(a, b, v));
+  EXPECT_TRUE(grasps_differ(a, b, v, kSmallObjectRadius_m));
+  // On a large object 1.1 cm is the same grasp slid along it; 2.1 cm is another.
+  EXPECT_FALSE(grasps_differ(a, b, v, kLargeObjectRadius_m));
+  b.X_OG.translation() = Eigen::Vector3d(0.0, 0.021, 0);
+  EXPECT_TRUE(grasps_differ(a, b, v, kLargeObjectRadius_m));
+  EXPECT_DOUBLE_EQ(min_gcp_distance_m(v, kLargeObjectRadius_m), 0.02);
   b.X_OG.translation().setZero();
   b.X_OB.linear() = Eigen::AngleAxisd(21.0 * M_PI / 180.0, Eigen::Vector3d::UnitX()).matrix();
-  EXPECT_TRUE(grasps_differ(a, b, v));
+  EXPECT_TRUE(grasps_differ(a, b, v, kLargeObjectRadius_m));
   EXPECT_NEAR(grasp_pose_distance(a, b).hand_turn_rad, 21.0 * M_PI / 180.0, 1e-12);
 }
 

@@ -32,6 +32,10 @@ void add_validation_options(CLI::App* cmd, ValidationParams& v) {
                   "Accepted grasps differ: GCPs at least this far apart [m]...")
       ->check(number_in(0.0, 10.0))
       ->capture_default_str();
+  cmd->add_option("--min-gcp-distance-per-radius", v.min_gcp_distance_per_radius,
+                  "...or this fraction of the object's bounding radius, if more...")
+      ->check(number_in(0.0, 10.0))
+      ->capture_default_str();
   cmd->add_option("--min-hand-turn", v.min_hand_turn_deg,
                   "...or hand orientations at least this far apart [deg]")
       ->check(number_in(0.0, 180.0))

@@ -12,6 +12,7 @@
 
 #include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/explore_cords.h"
+#include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/palm_width.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/plan_generic_grasps.h"
@@ -142,9 +143,15 @@ GraspPoseDistance grasp_pose_distance(const Grasp& a, const Grasp& b) {
   return d;
 }
 
-bool grasps_differ(const Grasp& a, const Grasp& b, const ValidationParams& p) {
+double min_gcp_distance_m(const ValidationParams& p, double object_radius_m) {
+  return std::max(p.min_gcp_distance_m, p.min_gcp_distance_per_radius * object_radius_m);
+}
+
+bool grasps_differ(const Grasp& a, const Grasp& b, const ValidationParams& p,
+                   double object_radius_m) {
   const GraspPoseDistance d = grasp_pose_distance(a, b);
-  return d.gcp_m >= p.min_gcp_distance_m || d.hand_turn_rad >= p.min_hand_turn_deg * M_PI / 180.0;
+  return d.gcp_m >= min_gcp_distance_m(p, object_radius_m) ||
+         d.hand_turn_rad >= p.min_hand_turn_deg * M_PI / 180.0;
 }
 
 PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationParams& v,
@@ -175,6 +182,7 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
   sim.squeeze_shift_limit_m = v.squeeze_shift_limit_m;
 
   const int wanted = std::max(1, doc.params.grasps);
+  const double radius_m = bounding_radius(mesh, vertex_mean(mesh));
   CandidateSource source(doc, mesh, hand, cancel);
   PlanStats& stats = doc.stats;
   int candidate = -1;
@@ -200,7 +208,7 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
     ++candidate;
     if (!stats.first_force_closure_s) stats.first_force_closure_s = seconds_since(start);
     const bool differs = std::all_of(doc.grasps.begin(), doc.grasps.end(),
-                                     [&](const Grasp& a) { return grasps_differ(a, *g, v); });
+                                     [&](const Grasp& a) { return grasps_differ(a, *g, v, radius_m); });
     if (!differs) {
       ++vs.similar;
       say("candidate " + std::to_string(candidate) + ": a near copy of an accepted grasp");

@@ -33,6 +33,8 @@ struct ValidationParams {
   double squeeze_shift_limit_m = 0.05;
   /// Two accepted grasps differ when their GCPs are at least this far apart... [m]
   double min_gcp_distance_m = 0.01;
+  /// ...or this fraction of the object's bounding radius, if that is more [-]...
+  double min_gcp_distance_per_radius = 0.25;
   /// ...or their hand orientations differ by at least this angle [deg].
   double min_hand_turn_deg = 20.0;
   PerturbationParams perturbation;  ///< nudge of trials 2..N (as `validate --trials`)
@@ -45,7 +47,7 @@ struct ValidationParams {
                  CORDGRASP_NVP(min_held), CORDGRASP_NVP(require_held_as_planned),
                  CORDGRASP_NVP(budget_s),
                  CORDGRASP_NVP(squeeze_shift_limit_m), CORDGRASP_NVP(min_gcp_distance_m),
-                 CORDGRASP_NVP(min_hand_turn_deg), CORDGRASP_NVP(perturbation),
+                 CORDGRASP_NVP(min_gcp_distance_per_radius), CORDGRASP_NVP(min_hand_turn_deg), CORDGRASP_NVP(perturbation),
                  CORDGRASP_NVP(trial_seed));
   }
 };
@@ -121,8 +123,13 @@ struct GraspPoseDistance {
 /// Pose distance of grasps a and b (X_OG translations; rotation from X_OB_a to X_OB_b).
 GraspPoseDistance grasp_pose_distance(const Grasp& a, const Grasp& b);
 
-/// True when a and b differ: GCPs ≥ min_gcp_distance_m apart or hands turned ≥
-/// min_hand_turn_deg apart.
-bool grasps_differ(const Grasp& a, const Grasp& b, const ValidationParams& p);
+/// GCP distance at which two grasps of an object of bounding radius `object_radius_m` differ:
+/// max(min_gcp_distance_m, min_gcp_distance_per_radius × object_radius_m) [m].
+double min_gcp_distance_m(const ValidationParams& p, double object_radius_m);
+
+/// True when a and b, grasps of an object of bounding radius `object_radius_m`, differ: GCPs
+/// min_gcp_distance_m(p, object_radius_m) apart or hands turned ≥ min_hand_turn_deg apart.
+bool grasps_differ(const Grasp& a, const Grasp& b, const ValidationParams& p,
+                   double object_radius_m);
 
 }  // namespace cordgrasp
