@@ -6,6 +6,7 @@
 
 #include "commands.h"
 #include "options.h"
+#include "validation_options.h"
 #include "cordgrasp/core/assets.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/jobs/text_format.h"
@@ -115,12 +116,7 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--effort-scale", opt->job.effort_scale,
                   "Multiply every joint effort limit (e.g. 0.5 for weaker motors)")
       ->check(number_in(1e-3, 100.0));
-  cmd->add_option("--squeeze-weight", opt->job.squeeze_weight_factor,
-                  "Grasp force in proportion to the object's weight: the fingers' squeeze "
-                  "efforts are scaled down together until each planned contact is pressed with "
-                  "this x m*g/mu (0: the joints' effort limits; default " +
-                      format_number(defaults.squeeze_weight_factor) + ")")
-      ->check(number_in(0.0, 1e4));
+  add_squeeze_weight_option(cmd, opt->job.squeeze_weight_factor);
   cmd->add_option("--concavity", opt->job.concavity,
                   "HACD: largest concavity of a part, fraction of the bounding-box diagonal")
       ->check(number_in(0.0, 1.0));

@@ -1,6 +1,8 @@
 #include "validation_options.h"
 
 #include "options.h"
+#include "cordgrasp/jobs/text_format.h"
+#include "cordgrasp/sim/sim_params.h"
 
 namespace cordgrasp::cli {
 
@@ -60,6 +62,15 @@ void add_object_mass_options(CLI::App* cmd, std::optional<double>& mass_kg,
       ->check(number_in(1e-6, 1e4));
   cmd->add_option("--density", density_kgm3, "Object density [kg/m^3] (default 500)")
       ->check(number_in(1e-3, 1e5));
+}
+
+void add_squeeze_weight_option(CLI::App* cmd, std::optional<double>& squeeze_weight_factor) {
+  cmd->add_option("--squeeze-weight", squeeze_weight_factor,
+                  "Grasp force in proportion to the object's weight: the fingers' squeeze "
+                  "efforts are scaled down together until each planned contact is pressed with "
+                  "this x m*g/mu (0: the joints' effort limits; default " +
+                      format_number(SimParams{}.squeeze_weight_factor) + ")")
+      ->check(number_in(0.0, 1e4));
 }
 
 }  // namespace cordgrasp::cli

@@ -16,4 +16,7 @@ void add_validation_options(CLI::App* cmd, ValidationParams& v);
 void add_object_mass_options(CLI::App* cmd, std::optional<double>& mass_kg,
                              std::optional<double>& density_kgm3);
 
+/// Adds --squeeze-weight (SimParams::squeeze_weight_factor override).
+void add_squeeze_weight_option(CLI::App* cmd, std::optional<double>& squeeze_weight_factor);
+
 }  // namespace cordgrasp::cli

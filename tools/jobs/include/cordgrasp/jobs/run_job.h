@@ -30,6 +30,7 @@ struct RunParams {
   ValidationParams validation;  ///< validated planning (its tests, protocol: from above)
   std::optional<double> mass_kg;       ///< object mass override [kg]
   std::optional<double> density_kgm3;  ///< object density override [kg/m³]
+  std::optional<double> squeeze_weight_factor;  ///< SimParams::squeeze_weight_factor override
   PictureOptions picture;      ///< size of the pictures (view: iso)
   bool render = true;          ///< write PNGs (planned grasps, physics frames, contact sheet)
   std::string out_dir;         ///< output folder, created if missing
