@@ -88,6 +88,23 @@ void apply_protocol(Protocol protocol, SimParams* params) {
   throw std::invalid_argument("apply_protocol: unknown protocol");
 }
 
+void apply_sim_overrides(const SimOverrides& overrides, SimParams* params) {
+  if (overrides.mass_kg) params->mass_kg = overrides.mass_kg;
+  if (overrides.density_kgm3) params->density_kgm3 = *overrides.density_kgm3;
+  if (overrides.squeeze_weight_factor)
+    params->squeeze_weight_factor = *overrides.squeeze_weight_factor;
+}
+
+SimOverrides sim_overrides_or(const SimOverrides& given, const SimOverrides& recorded) {
+  SimOverrides out = given;
+  if (!given.mass_kg && !given.density_kgm3) {
+    out.mass_kg = recorded.mass_kg;
+    out.density_kgm3 = recorded.density_kgm3;
+  }
+  if (!given.squeeze_weight_factor) out.squeeze_weight_factor = recorded.squeeze_weight_factor;
+  return out;
+}
+
 SimParams sim_params_for(Protocol protocol) {
   SimParams params;
   apply_protocol(protocol, &params);

@@ -133,6 +133,45 @@ TEST(PlanValidatedGrasps, ValidationRecordRoundTripsThroughPlanJsonAndIsReadStri
   EXPECT_THROW(plan_from_json(bad_outcome, box.hand, "plan.json"), InputError);
 }
 
+TEST(PlanValidatedGrasps, ValidatingThePlanAgainTestsTheObjectItWasAcceptedWith) {
+  constexpr double kMass_kg = 0.123;      // not the box's 500 kg/m³ × 200 cm³ = 0.1 kg
+  constexpr double kSqueezeWeight = 12.0;  // not the default
+  constexpr double kDensity_kgm3 = 1000.0;
+  constexpr double kBoxVolume_m3 = 0.05 * 0.05 * 0.08;
+  BoxPlan box(1);
+  box.v.physics.mass_kg = kMass_kg;
+  box.v.physics.squeeze_weight_factor = kSqueezeWeight;
+  const PlanDocument plan = box.plan();
+  ASSERT_EQ(plan.grasps.size(), 1u);
+  EXPECT_DOUBLE_EQ(plan.validation->grasps[0].mass_kg, kMass_kg);  // simulated with it
+
+  const std::string dir = temp_dir("overrides");
+  const std::string plan_path = dir + "/plan.json";
+  write_plan_file(plan_path, plan, box.hand);
+  const auto validate = [&](const std::string& options) {
+    const auto r = test::run_cordgrasp("validate --plan '" + plan_path + "' --tests lift " +
+                                       options + " --out '" + dir + "/sim.json'");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    std::ifstream in(dir + "/sim.json");
+    return nlohmann::json::parse(in);
+  };
+  // Nothing given: the plan's record.
+  nlohmann::json sim = validate("");
+  EXPECT_DOUBLE_EQ(sim.at("object").at("mass_kg").get<double>(), kMass_kg);
+  EXPECT_DOUBLE_EQ(sim.at("parameters").at("squeeze_weight_factor").get<double>(),
+                   kSqueezeWeight);
+  // A density given replaces the recorded mass (one choice of weight); the factor stays.
+  sim = validate("--density " + std::to_string(kDensity_kgm3));
+  EXPECT_NEAR(sim.at("object").at("mass_kg").get<double>(), kDensity_kgm3 * kBoxVolume_m3,
+              1e-3 * kDensity_kgm3 * kBoxVolume_m3);
+  EXPECT_DOUBLE_EQ(sim.at("parameters").at("squeeze_weight_factor").get<double>(),
+                   kSqueezeWeight);
+  sim = validate("--squeeze-weight 0");
+  EXPECT_DOUBLE_EQ(sim.at("parameters").at("squeeze_weight_factor").get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(sim.at("object").at("mass_kg").get<double>(), kMass_kg);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(GraspsDiffer, ByGcpDistanceOrHandTurn) {
   ValidationParams v;  // 1 cm or a quarter of the radius, 20°
   constexpr double kSmallObjectRadius_m = 0.02;  // a quarter is 5 mm: 1 cm counts

@@ -28,8 +28,6 @@ struct PlanOptions {
   std::string out;
   bool validate = false;           ///< --validate: only grasps that hold in physics
   ValidationParams validation;
-  std::optional<double> mass_kg, density_kgm3;
-  std::optional<double> squeeze_weight_factor;  ///< SimParams::squeeze_weight_factor
   int jobs = 1;
   bool quiet = false;
 };
@@ -90,11 +88,7 @@ void run_plan(const PlanOptions& opt) {
   const HandModel hand = load_hand(opt.hand, opt.hand_load);
   PlanDocument doc;
   if (opt.validate) {
-    SimParams sim;
-    sim.mass_kg = opt.mass_kg;
-    if (opt.density_kgm3) sim.density_kgm3 = *opt.density_kgm3;
-    if (opt.squeeze_weight_factor) sim.squeeze_weight_factor = *opt.squeeze_weight_factor;
-    doc = plan_validated_grasps(opt.job, opt.validation, sim, mesh, object_path, hand, opt.jobs,
+    doc = plan_validated_grasps(opt.job, opt.validation, SimParams{}, mesh, object_path, hand, opt.jobs,
                                 [](const std::string& line) {
                                   std::cerr << "plan: " << line << '\n';
                                 },
@@ -136,8 +130,7 @@ void add_plan_command(CLI::App& app) {
   add_enum_option(cmd, "--protocol", &opt->validation.protocol,
                   "--validate: physics protocol, quick, thorough or fast");
   add_validation_options(cmd, opt->validation);
-  add_object_mass_options(cmd, opt->mass_kg, opt->density_kgm3);
-  add_squeeze_weight_option(cmd, opt->squeeze_weight_factor);
+  add_sim_override_options(cmd, opt->validation.physics);
   cmd->add_option("--jobs,-j", opt->jobs,
                   "--validate: trials simulated at once, one physics world per thread")
       ->check(whole_number_in(1, 256))

@@ -50,8 +50,7 @@ void add_run_command(CLI::App& app) {
                 "Plan force-closure grasps only and validate them afterwards (default: keep "
                 "only grasps held in --min-held of --trials physics trials)");
   add_validation_options(cmd, opt->run.validation);
-  add_object_mass_options(cmd, opt->run.mass_kg, opt->run.density_kgm3);
-  add_squeeze_weight_option(cmd, opt->run.squeeze_weight_factor);
+  add_sim_override_options(cmd, opt->run.validation.physics);
   cmd->add_option("--size", opt->run.picture.size, "Picture size WxH [px]")
       ->capture_default_str();
   cmd->add_flag("--no-render", opt->no_render, "No pictures");

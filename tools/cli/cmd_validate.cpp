@@ -46,11 +46,7 @@ void add_validate_command(CLI::App& app) {
                   "exits) or fast (1/480 s, all shake axes at once; docs/physics.md)");
   cmd->add_option("--mu", opt->job.mu, "Friction coefficient (default: the plan's μ)")
       ->check(number_in(0.0, 10.0));
-  cmd->add_option("--mass", opt->job.mass_kg, "Object mass [kg] (default: density × volume)")
-      ->check(number_in(1e-6, 1e4));
-  cmd->add_option("--density", opt->job.density_kgm3,
-                  "Object density [kg/m^3] (default " + format_number(defaults.density_kgm3) + ")")
-      ->check(number_in(1.0, 1e5));
+  add_sim_override_options(cmd, opt->job.physics, "the plan's validation record's, else ");
   cmd->add_option("--object-shape", opt->job.object_shape,
                   "Object collision shape: auto, hull, decomposition, gimpact")
       ->check(one_of({"auto", "hull", "decomposition", "gimpact"}))
@@ -116,7 +112,6 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--effort-scale", opt->job.effort_scale,
                   "Multiply every joint effort limit (e.g. 0.5 for weaker motors)")
       ->check(number_in(1e-3, 100.0));
-  add_squeeze_weight_option(cmd, opt->job.squeeze_weight_factor);
   cmd->add_option("--concavity", opt->job.concavity,
                   "HACD: largest concavity of a part, fraction of the bounding-box diagonal")
       ->check(number_in(0.0, 1.0));

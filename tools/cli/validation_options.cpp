@@ -55,20 +55,18 @@ void add_validation_options(CLI::App* cmd, ValidationParams& v) {
       ->capture_default_str();
 }
 
-void add_object_mass_options(CLI::App* cmd, std::optional<double>& mass_kg,
-                             std::optional<double>& density_kgm3) {
-  cmd->add_option("--mass", mass_kg, "Object mass [kg] (default: from the volume, "
-                                     "docs/physics.md §2)")
+void add_sim_override_options(CLI::App* cmd, SimOverrides& o, const std::string& recorded_note) {
+  cmd->add_option("--mass", o.mass_kg, "Object mass [kg] (default: " + recorded_note +
+                                           "from the volume, docs/physics.md §2)")
       ->check(number_in(1e-6, 1e4));
-  cmd->add_option("--density", density_kgm3, "Object density [kg/m^3] (default 500)")
-      ->check(number_in(1e-3, 1e5));
-}
-
-void add_squeeze_weight_option(CLI::App* cmd, std::optional<double>& squeeze_weight_factor) {
-  cmd->add_option("--squeeze-weight", squeeze_weight_factor,
+  cmd->add_option("--density", o.density_kgm3,
+                  "Object density [kg/m^3] (default: " + recorded_note +
+                      format_number(SimParams{}.density_kgm3) + ")")
+      ->check(number_in(1.0, 1e5));
+  cmd->add_option("--squeeze-weight", o.squeeze_weight_factor,
                   "Grasp force in proportion to the object's weight: the fingers' squeeze "
                   "efforts are scaled down together until each planned contact is pressed with "
-                  "this x m*g/mu (0: the joints' effort limits; default " +
+                  "this x m*g/mu (0: the joints' effort limits; default: " + recorded_note +
                       format_number(SimParams{}.squeeze_weight_factor) + ")")
       ->check(number_in(0.0, 1e4));
 }

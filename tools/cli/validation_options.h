@@ -8,15 +8,14 @@
 
 namespace cordgrasp::cli {
 
-/// Adds --trials, --min-held, --budget, --squeeze-shift-limit, --min-gcp-distance,
-/// --min-hand-turn, --trial-offset, --trial-turn and --trial-seed, bound to `v`.
+/// Adds --trials, --min-held, --require-held-as-planned, --budget, --squeeze-shift-limit,
+/// --min-gcp-distance, --min-gcp-distance-per-radius, --min-hand-turn, --trial-offset,
+/// --trial-turn and --trial-seed, bound to `v`.
 void add_validation_options(CLI::App* cmd, ValidationParams& v);
 
-/// Adds --mass [kg] and --density [kg/m³] (object mass overrides of the physics).
-void add_object_mass_options(CLI::App* cmd, std::optional<double>& mass_kg,
-                             std::optional<double>& density_kgm3);
-
-/// Adds --squeeze-weight (SimParams::squeeze_weight_factor override).
-void add_squeeze_weight_option(CLI::App* cmd, std::optional<double>& squeeze_weight_factor);
+/// Adds --mass [kg], --density [kg/m³] and --squeeze-weight, bound to `o`; `recorded_note`
+/// ("the plan's, else ") prefixes the defaults in the help.
+void add_sim_override_options(CLI::App* cmd, SimOverrides& o,
+                              const std::string& recorded_note = "");
 
 }  // namespace cordgrasp::cli

@@ -178,6 +178,7 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
   const SimTests tests = sim_tests_from_string(v.tests);
   SimParams sim = sim_in;
   apply_protocol(v.protocol, &sim);
+  apply_sim_overrides(v.physics, &sim);
   sim.contact = plan_contact_model(doc);
   sim.squeeze_shift_limit_m = v.squeeze_shift_limit_m;
 

@@ -57,9 +57,7 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   // 1. Plan (validated: only grasps that hold in physics).
   const bool validated = physics && opt.validate;
   SimParams base = sim_params_for(opt.protocol);
-  base.mass_kg = opt.mass_kg;
-  if (opt.density_kgm3) base.density_kgm3 = *opt.density_kgm3;
-  if (opt.squeeze_weight_factor) base.squeeze_weight_factor = *opt.squeeze_weight_factor;
+  apply_sim_overrides(opt.validation.physics, &base);
   ValidationParams validation = opt.validation;
   validation.tests = opt.tests;
   validation.protocol = opt.protocol;

@@ -65,8 +65,10 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   // μ: one value shared with the planner: the plan's unless --mu overrides it.
   params.contact = plan_contact_model(plan);
   if (opt.mu) params.contact.mu = *opt.mu;
-  if (opt.mass_kg) params.mass_kg = *opt.mass_kg;
-  if (opt.density_kgm3) params.density_kgm3 = *opt.density_kgm3;
+  apply_sim_overrides(
+      sim_overrides_or(opt.physics, plan.validation ? plan.validation->params.physics
+                                                    : SimOverrides{}),
+      &params);
   params.object_shape = parse_object_shape(opt.object_shape);
   params.decomposition_cache_dir = opt.cache_dir;
   if (opt.time_step_s) params.time_step_s = *opt.time_step_s;
@@ -89,7 +91,6 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
     params.squeeze_direction = parse_squeeze_direction(opt.squeeze_direction);
   if (!opt.object_fixed.empty()) params.object_fixed = parse_object_fixed(opt.object_fixed);
   if (opt.effort_scale) params.effort_scale = *opt.effort_scale;
-  if (opt.squeeze_weight_factor) params.squeeze_weight_factor = *opt.squeeze_weight_factor;
   if (opt.concavity) params.decomposition.concavity = *opt.concavity;
   if (opt.hacd_triangles) params.decomposition.max_input_triangles = *opt.hacd_triangles;
   if (opt.hull_vertices) params.decomposition.max_hull_vertices = *opt.hull_vertices;

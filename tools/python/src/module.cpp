@@ -333,10 +333,16 @@ void bind_validate(py::module_& m) {
   m.def(
       "validate",
       [](PyPlan& plan, const std::string& protocol, const std::string& tests, int trials,
-         int max_grasps, int jobs, std::uint64_t seed) {
+         int max_grasps, int jobs, std::uint64_t seed, std::optional<double> mass_kg,
+         std::optional<double> density_kgm3, std::optional<double> squeeze_weight_factor) {
         SimParams params;
         apply_protocol(parse_protocol(protocol), &params);
         params.contact = plan_contact_model(plan.doc);
+        const SimOverrides given{mass_kg, density_kgm3, squeeze_weight_factor};
+        apply_sim_overrides(
+            sim_overrides_or(given, plan.doc.validation ? plan.doc.validation->params.physics
+                                                        : SimOverrides{}),
+            &params);
         const SimTests sim_tests = sim_tests_from_string(tests);
         const Mesh& mesh = plan_mesh(plan);
         SimDocument doc;
@@ -352,8 +358,11 @@ void bind_validate(py::module_& m) {
       },
       py::arg("plan"), py::arg("protocol") = "quick", py::arg("tests") = "lift,shake,gravity6",
       py::arg("trials") = 1, py::arg("max_grasps") = -1, py::arg("jobs") = 1,
-      py::arg("seed") = 1,
-      "Checks the plan's grasps in Bullet; returns the sim.json content as a dict.");
+      py::arg("seed") = 1, py::arg("mass_kg") = py::none(), py::arg("density_kgm3") = py::none(),
+      py::arg("squeeze_weight_factor") = py::none(),
+      "Checks the plan's grasps in Bullet; returns the sim.json content as a dict. mass_kg, "
+      "density_kgm3, squeeze_weight_factor: as `validate --mass/--density/--squeeze-weight`; "
+      "None: those a validated plan was accepted with, else the defaults.");
 }
 
 // ---- pictures ----------------------------------------------------------------------------

@@ -152,3 +152,12 @@ def test_plan_validated_keeps_only_grasps_that_held(mug, hand):
         assert g["validation"]["held_trials"] >= 1
     with pytest.raises(TypeError):
         cordgrasp.plan_validated(mug, hand, validation={"no_such_key": 1})
+
+
+def test_validate_tests_the_object_a_validated_plan_was_accepted_with(mug, hand):
+    assert cordgrasp.validation_parameters()["mass_kg"] is None
+    plan = cordgrasp.plan_validated(mug, hand, grasps=1, seed=1,
+                                    validation={"trials": 1, "min_held": 1, "mass_kg": 0.05})
+    assert plan.validation["parameters"]["physics"]["mass_kg"] == 0.05
+    assert cordgrasp.validate(plan, tests="lift")["object"]["mass_kg"] == 0.05
+    assert cordgrasp.validate(plan, tests="lift", mass_kg=0.07)["object"]["mass_kg"] == 0.07

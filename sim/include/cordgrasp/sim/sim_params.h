@@ -312,6 +312,30 @@ struct SimParams {
   }
 };
 
+/// What a user sets per object on top of a protocol (CLI --mass, --density, --squeeze-weight):
+/// a validated plan records them (ValidationParams::physics) so that validating it again tests
+/// the same object. Unset fields leave SimParams' values.
+struct SimOverrides {
+  std::optional<double> mass_kg;                ///< SimParams::mass_kg [kg]
+  std::optional<double> density_kgm3;           ///< SimParams::density_kgm3 [kg/m³]
+  std::optional<double> squeeze_weight_factor;  ///< SimParams::squeeze_weight_factor [-]
+
+  /// Visits every field in declaration order (core/serialize.h).
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    visit_fields(a, CORDGRASP_NVP(mass_kg), CORDGRASP_NVP(density_kgm3),
+                 CORDGRASP_NVP(squeeze_weight_factor));
+  }
+};
+
+/// Copies the set fields of `overrides` into `params`.
+void apply_sim_overrides(const SimOverrides& overrides, SimParams* params);
+
+/// `given` completed from `recorded`: the squeeze factor where `given` has none; mass and
+/// density as one choice (the object's weight), taken from `recorded` only when `given` sets
+/// neither.
+SimOverrides sim_overrides_or(const SimOverrides& given, const SimOverrides& recorded);
+
 /// Sets the "(preset)" fields of `params` (time step, phase durations, shake path, rock
 /// frequency, reach start, early exits) and params->protocol to `protocol`'s values; leaves
 /// the others.

@@ -39,6 +39,9 @@ struct ValidationParams {
   double min_hand_turn_deg = 20.0;
   PerturbationParams perturbation;  ///< nudge of trials 2..N (as `validate --trials`)
   std::uint64_t trial_seed = 1;     ///< seed of the nudges' directions
+  /// Object mass and grip of every trial over the SimParams given (CLI --mass, --density,
+  /// --squeeze-weight); `validate --plan` takes them from here unless told otherwise.
+  SimOverrides physics;
 
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
@@ -48,7 +51,7 @@ struct ValidationParams {
                  CORDGRASP_NVP(budget_s),
                  CORDGRASP_NVP(squeeze_shift_limit_m), CORDGRASP_NVP(min_gcp_distance_m),
                  CORDGRASP_NVP(min_gcp_distance_per_radius), CORDGRASP_NVP(min_hand_turn_deg), CORDGRASP_NVP(perturbation),
-                 CORDGRASP_NVP(trial_seed));
+                 CORDGRASP_NVP(trial_seed), CORDGRASP_NVP(physics));
   }
 };
 

@@ -27,7 +27,7 @@ using ValidatedPlanProgress = std::function<void(const std::string&)>;
 /// candidate is dropped after its first trial),
 /// until enough are accepted or budget_s is spent (checked before each candidate).
 /// `sim` gives the physics (its protocol preset and contact model are replaced by v.protocol
-/// and the plan's; mass and density overrides are kept). The document holds only accepted
+/// and the plan's, then v.physics's set fields replace its own). The document holds only accepted
 /// grasps, with doc.validation filled. Deterministic for given seeds (timings aside) unless
 /// the budget stops it. `cancel` is checked before each candidate, in the planner and
 /// between trial batches: the candidate in flight is abandoned (not accepted), the document

@@ -27,10 +27,9 @@ struct RunParams {
   /// Plan only grasps that hold (plan_validated_grasps, with `tests` and `protocol`); false:
   /// force-closure grasps as planned, validated afterwards. Ignored with tests "none".
   bool validate = true;
-  ValidationParams validation;  ///< validated planning (its tests, protocol: from above)
-  std::optional<double> mass_kg;       ///< object mass override [kg]
-  std::optional<double> density_kgm3;  ///< object density override [kg/m³]
-  std::optional<double> squeeze_weight_factor;  ///< SimParams::squeeze_weight_factor override
+  /// Validated planning (its tests, protocol: from above); validation.physics (mass,
+  /// density, squeeze weight) applies to the physics of the unvalidated plan too.
+  ValidationParams validation;
   PictureOptions picture;      ///< size of the pictures (view: iso)
   bool render = true;          ///< write PNGs (planned grasps, physics frames, contact sheet)
   std::string out_dir;         ///< output folder, created if missing

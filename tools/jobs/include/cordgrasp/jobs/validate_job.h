@@ -26,8 +26,9 @@ struct ValidateJobParams {
   std::string tests = "lift,shake,gravity6";
   Protocol protocol = Protocol::kQuick;  ///< preset applied before the options below
   std::optional<double> mu;
-  std::optional<double> mass_kg;
-  std::optional<double> density_kgm3;
+  /// Mass, density, squeeze weight; unset: those the plan was validated with (its
+  /// validation.parameters.physics, sim_overrides_or), else SimParams'.
+  SimOverrides physics;
   std::string object_shape = "auto";
   std::string cache_dir;
   std::optional<double> time_step_s;
@@ -46,7 +47,6 @@ struct ValidateJobParams {
   std::string squeeze_direction;
   std::string object_fixed;  ///< "never", "reach", "close" (SimParams::object_fixed); "": default
   std::optional<double> effort_scale;
-  std::optional<double> squeeze_weight_factor;  ///< SimParams::squeeze_weight_factor
   std::optional<int> hacd_triangles;
   std::optional<int> hull_vertices;
   bool warmstart = false;
