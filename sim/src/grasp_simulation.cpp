@@ -137,6 +137,14 @@ struct GraspSimulation::Impl {
   /// Spring gain of compliant servos [N·m/rad or N/m]: the effort is capped at gain × error
   /// (0: rigid servo, capped at the effort limit only).
   Eigen::VectorXd spring_gain;
+  /// Effort cap of the bounded squeeze (SimParams::squeeze_travel_m) [N·m or N]; 0: the limit.
+  Eigen::VectorXd effort_cap;
+  /// Bounded squeeze, once the fingers have reached the plan: +1/−1 for joints that push
+  /// toward larger/smaller q, which then hold the plan with their full effort limit when pushed
+  /// back behind it; 0: the cap applies both ways.
+  Eigen::VectorXd hold_sign;
+  /// Levers of the joints on the planned contacts at the plan (contact_levers) [m or -].
+  Eigen::VectorXd plan_lever;
   double squeeze_fraction = 1.0;  ///< ramps the springs' effort in at the start of the squeeze
   std::vector<int> actor_joints;     ///< driven joints of the actors
   std::vector<double> actor_sign;    ///< +1/−1: direction that closes
@@ -195,6 +203,12 @@ struct GraspSimulation::Impl {
   /// Largest fraction f ≤ SimParams::reach_start_fraction (f, 3f/4, f/2, f/4, 0) at which the
   /// joints q_preshape + f·(q − q_preshape) keep reach_start_clearance_m from the object.
   double reach_start_fraction_clear();
+  /// Joints at the reach start of SimParams::reach_start_gap_m: every actor joint with a planned
+  /// contact gap / lever short of the plan toward the preshape, the gap doubling while the
+  /// hand is within reach_start_clearance_m of the object; the preshape when none is clear.
+  Eigen::VectorXd reach_start_with_gap();
+  /// The bounded squeeze (SimParams::squeeze_travel_m > 0) in use.
+  bool bounded() const { return params.squeeze_travel_m > 0.0; }
   /// Smallest hand–object distance reported by Bullet's narrow phase for the current poses
   /// (+inf when no pair is within its contact threshold) [m].
   double hand_object_distance();
@@ -287,16 +301,6 @@ GraspSimulation::Impl::Impl(const Mesh& mesh, const HandModel& h, const Grasp& g
   X_WB_cmd = X_WO0 * X_OB;
   bullet::place_hand(*hand_body, X_WB_cmd, grasp.q_preshape);
   bullet::add_hand_to_world(*hand_body, *world, kHandGroup, kObjectGroup);
-  q_start = grasp.q_preshape;
-  if (params.reach_start_fraction > 0.0) {
-    const double f = reach_start_fraction_clear();
-    q_start = grasp.q_preshape + f * (grasp.q - grasp.q_preshape);
-    bullet::place_hand(*hand_body, X_WB_cmd, q_start);
-    // The probes leave contact points in the manifolds: start the simulation without them.
-    for (int m = 0; m < dispatcher->getNumManifolds(); ++m)
-      dispatcher->getManifoldByIndexInternal(m)->clearManifold();
-  }
-
   // Actor joints (the closing ones) and their closing directions.
   for (const Actor& actor : hand.actors)
     for (const Actor::Entry& e : actor.joints) {
@@ -305,7 +309,27 @@ GraspSimulation::Impl::Impl(const Mesh& mesh, const HandModel& h, const Grasp& g
       actor_sign.push_back(e.direction_speed > 0.0 ? 1.0 : -1.0);
       actor_speed.push_back(std::abs(e.direction_speed));
     }
+  plan_lever = grasp.contacts.empty()
+                   ? Eigen::VectorXd::Zero(n)
+                   : contact_levers(hand, grasp.q, grasp.X_OB, grasp.contacts);
+  q_start = grasp.q_preshape;
+  if (params.reach_start_gap_m > 0.0) {
+    q_start = reach_start_with_gap();
+    bullet::place_hand(*hand_body, X_WB_cmd, q_start);
+    for (int m = 0; m < dispatcher->getNumManifolds(); ++m)
+      dispatcher->getManifoldByIndexInternal(m)->clearManifold();
+  } else if (params.reach_start_fraction > 0.0) {
+    const double f = reach_start_fraction_clear();
+    q_start = grasp.q_preshape + f * (grasp.q - grasp.q_preshape);
+    bullet::place_hand(*hand_body, X_WB_cmd, q_start);
+    // The probes leave contact points in the manifolds: start the simulation without them.
+    for (int m = 0; m < dispatcher->getNumManifolds(); ++m)
+      dispatcher->getManifoldByIndexInternal(m)->clearManifold();
+  }
+
   q_target = q_start;
+  effort_cap = Eigen::VectorXd::Zero(n);
+  hold_sign = Eigen::VectorXd::Zero(n);
   qd_feedforward = Eigen::VectorXd::Zero(n);
   spring_gain = Eigen::VectorXd::Zero(n);
   speed_cap = Eigen::VectorXd::Constant(n, params.hold_speed);
@@ -341,6 +365,27 @@ double GraspSimulation::Impl::reach_start_fraction_clear() {
   return 0.0;
 }
 
+Eigen::VectorXd GraspSimulation::Impl::reach_start_with_gap() {
+  const auto start_for = [&](double gap_m) {
+    Eigen::VectorXd q = grasp.q;
+    for (const int j : actor_joints) {
+      if (!(plan_lever[j] > 0.0)) continue;
+      const double back = grasp.q_preshape[j] - grasp.q[j];
+      const double step = std::min(std::abs(back), gap_m / plan_lever[j]);
+      q[j] += back >= 0.0 ? step : -step;
+    }
+    return clamp_to_limits(hand, apply_couplings(hand, q));
+  };
+  for (int doubling = 0; doubling < 4; ++doubling) {
+    const Eigen::VectorXd q = start_for(params.reach_start_gap_m * std::ldexp(1.0, doubling));
+    bullet::place_hand(*hand_body, X_WB_cmd, q);
+    for (int m = 0; m < dispatcher->getNumManifolds(); ++m)
+      dispatcher->getManifoldByIndexInternal(m)->clearManifold();
+    if (hand_object_distance() >= params.reach_start_clearance_m) return q;
+  }
+  return grasp.q_preshape;
+}
+
 GraspSimulation::Impl::~Impl() {
   if (world) {
     if (hand_body) bullet::remove_hand_from_world(*hand_body, *world);
@@ -373,6 +418,11 @@ void GraspSimulation::Impl::step(const Eigen::Isometry3d& X_WB_next) {
         std::clamp(qd_feedforward[j] + params.servo_gain_per_s * error, -cap, cap);
     hand_body->motors[k]->setVelocityTarget(speed, 1.0);
     double effort = hand_body->effort_limit[static_cast<size_t>(j)];
+    if (effort_cap[j] > 0.0) {
+      // Bounded squeeze: gentle past the plan, stiff (the full limit) when pushed back behind it.
+      const bool behind = hold_sign[j] * (grasp.q[j] - mb.getJointPos(i)) > 0.0;
+      if (!behind) effort = squeeze_fraction * std::min(effort, effort_cap[j]);
+    }
     if (spring_gain[j] > 0.0)
       effort = squeeze_fraction * std::min(effort, spring_gain[j] * std::abs(error));
     hand_body->motors[k]->setMaxAppliedImpulse(effort * dt);
@@ -670,6 +720,15 @@ PhaseResult GraspSimulation::close() {
       reach_s = std::max(reach_s, kMinJerkPeakSpeed * std::abs(s.grasp.q[j] - q0[j]) / close_cap[j]);
   // Tracking needs headroom over the path's peak speed.
   s.speed_cap = 2.0 * close_cap;
+  // Bounded close: the fingers push with their squeeze effort already while they reach, so
+  // one that meets the object early presses it no harder than the squeeze will.
+  Eigen::VectorXd push = s.squeeze_efforts();
+  if (s.bounded()) {
+    for (const int j : s.actor_joints) {
+      if (!(s.plan_lever[j] > 0.0)) push[j] = 0.0;  // no planned contact: holds the plan
+      s.effort_cap[j] = std::abs(push[j]);
+    }
+  }
   const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
   const int reach_steps = static_cast<int>(std::ceil(reach_s / s.dt));
   for (int k = 1; k <= reach_steps && !s.blew_up; ++k) {
@@ -686,11 +745,18 @@ PhaseResult GraspSimulation::close() {
   // keeps pushing if the object gives way; the other joints hold the plan.
   s.q_target = s.grasp.q;
   s.speed_cap = close_cap;
-  const Eigen::VectorXd push = s.squeeze_efforts();
   for (size_t a = 0; a < s.actor_joints.size(); ++a) {
     const int j = s.actor_joints[a];
     if (push[j] == 0.0) continue;  // holds the plan
     const Joint& joint = s.hand.joints[static_cast<size_t>(j)];
+    if (s.bounded()) {
+      // Bounded: squeeze_travel_m past the planned contacts at this joint's lever, pushing
+      // with the capped effort all the way (no spring whose force fades near its rest point).
+      const double lever = joint.type == JointType::kPrismatic ? 1.0 : s.plan_lever[j];
+      s.q_target[j] = s.grasp.q[j] + std::copysign(s.params.squeeze_travel_m / lever, push[j]);
+      s.hold_sign[j] = push[j] > 0.0 ? 1.0 : -1.0;
+      continue;
+    }
     const double squeeze =
         joint.type == JointType::kPrismatic ? s.params.squeeze_m : s.params.squeeze_rad;
     s.q_target[j] = s.grasp.q[j] + (push[j] > 0.0 ? squeeze : -squeeze);
@@ -700,14 +766,25 @@ PhaseResult GraspSimulation::close() {
   const int min_steps = static_cast<int>(std::lround(s.params.squeeze_min_time_s / s.dt));
   const int stall_steps = std::max(1, static_cast<int>(std::lround(s.params.stall_time_s / s.dt)));
   int stalled = 0;
+  // Bounded: the stage also waits for the object to rest in the hand (rest_drift_m / _rad
+  // over the stall time), its effort already capped since the reach (no ramp).
+  Eigen::Isometry3d X_BO_still = s.X_BO();
   for (int k = 1; k <= max_steps && !s.blew_up; ++k) {
-    s.squeeze_fraction = std::min(1.0, k * s.dt / std::max(s.params.squeeze_ramp_s, s.dt));
+    s.squeeze_fraction = s.bounded() ? 1.0
+                                     : std::min(1.0, k * s.dt /
+                                                         std::max(s.params.squeeze_ramp_s, s.dt));
     s.step(X_WB0);
     const Eigen::VectorXd qd = bullet::hand_joint_velocities(*s.hand_body, n);
     bool still = true;
     for (size_t a = 0; a < s.actor_joints.size(); ++a)
       if (std::abs(qd[s.actor_joints[a]]) > s.params.stall_speed * s.actor_speed[a]) still = false;
+    if (still && s.bounded()) {
+      double turned = 0.0;
+      const double drift = s.pose_change(X_BO_still, &turned);
+      still = drift < s.params.rest_drift_m && turned < s.params.rest_drift_rad;
+    }
     stalled = still ? stalled + 1 : 0;
+    if (!still) X_BO_still = s.X_BO();
     if (k >= min_steps && stalled >= stall_steps && s.squeeze_fraction >= 1.0) break;
   }
   s.squeeze_fraction = 1.0;
@@ -849,6 +926,35 @@ PhaseResult GraspSimulation::gravity6() {
 
 PhaseSnapshot GraspSimulation::snapshot(const std::string& phase) const {
   return impl_->snapshot(phase);
+}
+
+std::vector<double> GraspSimulation::planned_contact_offsets() const {
+  const Impl& s = *impl_;
+  // Simulated contact points on the object's surface, in the object frame.
+  std::vector<Eigen::Vector3d> touched_O;
+  const Eigen::Isometry3d X_OW = s.X_WO().inverse();
+  const btCollisionObject* obj = s.object->body.get();
+  for (int m = 0; m < s.dispatcher->getNumManifolds(); ++m) {
+    const btPersistentManifold* pm = s.dispatcher->getManifoldByIndexInternal(m);
+    const bool object_is_a = pm->getBody0() == obj;
+    if (!object_is_a && pm->getBody1() != obj) continue;
+    for (int c = 0; c < pm->getNumContacts(); ++c) {
+      const btManifoldPoint& p = pm->getContactPoint(c);
+      if (p.getDistance() >= s.params.contact_distance_m) continue;
+      touched_O.push_back(X_OW * from_bt(object_is_a ? p.getPositionWorldOnA()
+                                                     : p.getPositionWorldOnB()));
+    }
+  }
+  std::vector<double> offsets;
+  for (const Contact& planned : s.grasp.contacts) {
+    double nearest = std::numeric_limits<double>::quiet_NaN();
+    for (const Eigen::Vector3d& p_O : touched_O) {
+      const double d = (p_O - planned.p_O).norm();
+      if (!(d >= nearest)) nearest = d;
+    }
+    offsets.push_back(nearest);
+  }
+  return offsets;
 }
 
 const SimObjectInfo& GraspSimulation::object_info() const { return impl_->object->info; }

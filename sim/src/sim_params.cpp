@@ -20,7 +20,8 @@ constexpr EnumName<ObjectFixed> kObjectFixedNames[] = {{ObjectFixed::kNever, "ne
                                                        {ObjectFixed::kClose, "close"}};
 constexpr EnumName<Protocol> kProtocolNames[] = {{Protocol::kQuick, "quick"},
                                                  {Protocol::kThorough, "thorough"},
-                                                 {Protocol::kFast, "fast"}};
+                                                 {Protocol::kFast, "fast"},
+                                                 {Protocol::kStandard, "standard"}};
 constexpr EnumName<WorldFrame> kWorldFrameNames[] = {{WorldFrame::kApproachDown, "approach_down"},
                                                      {WorldFrame::kObject, "object"}};
 
@@ -68,6 +69,25 @@ void apply_protocol(Protocol protocol, SimParams* params) {
       p.shake_all_axes_at_once = protocol == Protocol::kFast;  // one shake, one rock segment
       p.gravity6_time_s = 0.5;
       p.reach_start_fraction = 0.8;
+      p.reach_start_gap_m = 0.0;
+      p.squeeze_travel_m = 0.0;
+      p.squeeze_max_time_s = 0.5;
+      p.rest_exit_time_s = 0.1;
+      p.exit_on_failure = true;
+      return;
+    case Protocol::kStandard:
+      p.time_step_s = 1.0 / 960.0;
+      p.lift_time_s = 0.5;
+      p.lift_hold_s = 0.3;
+      p.shake_time_s = 0.5;
+      p.rock_frequency_hz = 2.0;
+      p.rock_time_s = 0.5;
+      p.shake_all_axes_at_once = true;
+      p.gravity6_time_s = 0.5;
+      p.reach_start_fraction = 0.0;
+      p.reach_start_gap_m = 3e-3;
+      p.squeeze_travel_m = 3e-3;
+      p.squeeze_max_time_s = 0.3;
       p.rest_exit_time_s = 0.1;
       p.exit_on_failure = true;
       return;
@@ -81,6 +101,9 @@ void apply_protocol(Protocol protocol, SimParams* params) {
       p.shake_all_axes_at_once = false;
       p.gravity6_time_s = 1.0;
       p.reach_start_fraction = 0.0;
+      p.reach_start_gap_m = 0.0;
+      p.squeeze_travel_m = 0.0;
+      p.squeeze_max_time_s = 0.5;
       p.rest_exit_time_s = 0.0;
       p.exit_on_failure = false;
       return;

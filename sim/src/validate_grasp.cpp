@@ -62,7 +62,10 @@ bool settle_and_close(GraspSimulation& sim, SimResult& result, const PhaseHook& 
     result.rejected_in_close = true;
   }
   const bool closed = close.outcome == Outcome::kHeld;
-  if (record) result.phases.push_back(close);
+  if (record) {
+    result.phases.push_back(close);
+    result.planned_contact_offsets_m = sim.planned_contact_offsets();
+  }
   if (!closed) {
     result.outcome = close.outcome;
     return false;

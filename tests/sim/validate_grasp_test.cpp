@@ -283,6 +283,53 @@ Grasp centre_pinch_with_contacts() {
   return g;
 }
 
+/// The left pad's joint value (the gripper's opening) at the end of `phase`.
+double opening_after(const Mesh& mesh, const Grasp& grasp, const SimParams& params,
+                     const std::string& phase) {
+  double opening = NAN;
+  const int j = find_joint(gripper(), "left_finger_joint");
+  validate_grasp(mesh, gripper(), grasp, params, SimTests{false, false, false},
+                 [&](const PhaseSnapshot& s) {
+                   if (s.phase == phase) opening = s.q[j];
+                 });
+  return opening;
+}
+
+TEST(ValidateGrasp, BoundedCloseStartsAGapShortOfThePlanAndSqueezesAtMostTheTravelPast) {
+  /// Servo tracking error of a joint holding its target [m].
+  constexpr double kHeldJointTol_m = 1e-4;
+  const SimParams standard = gripper_params(Protocol::kStandard);
+  ASSERT_GT(standard.reach_start_gap_m, 0.0);
+  ASSERT_GT(standard.squeeze_travel_m, 0.0);
+  const Grasp pinch = centre_pinch_with_contacts();
+  const double plan = 0.5 * kBoxSide_m;
+  // Reach start: each pad the gap short of its planned contact (a prismatic lever is 1).
+  EXPECT_NEAR(opening_after(box(), pinch, standard, "settle"), plan + standard.reach_start_gap_m,
+              kHeldJointTol_m);
+  // A box 1 cm narrower than planned: the pads travel squeeze_travel_m past the plan and stop
+  // there, short of its faces, instead of closing on it.
+  constexpr double kNarrower_m = 0.01;
+  const Mesh narrow = make_box_mesh(
+      Eigen::Vector3d(kBoxSide_m - kNarrower_m, kBoxSide_m, kBoxSide_m));
+  EXPECT_NEAR(opening_after(narrow, pinch, standard, "close"), plan - standard.squeeze_travel_m,
+              kHeldJointTol_m);
+  const SimResult r = validate_grasp(narrow, gripper(), pinch, standard, SimTests{true, false, false});
+  EXPECT_EQ(r.phase("close")->outcome, Outcome::kDropped);
+}
+
+TEST(ValidateGrasp, BoundedCloseKeepsThePinchedBoxWhereItWasPlanned) {
+  // The planned grasp is the one tested: the box barely moves while the pads close, and the
+  // simulated contacts are at the planned ones.
+  constexpr double kPlannedShiftTol_m = 1e-3;
+  constexpr double kContactOffsetTol_m = 3e-3;
+  const Grasp pinch = centre_pinch_with_contacts();
+  const SimResult r = validate_grasp(box(), gripper(), pinch, gripper_params(Protocol::kStandard));
+  EXPECT_EQ(r.outcome, Outcome::kHeld);
+  EXPECT_LT(r.phase("close")->translation_m, kPlannedShiftTol_m);
+  ASSERT_EQ(r.planned_contact_offsets_m.size(), pinch.contacts.size());
+  for (const double d : r.planned_contact_offsets_m) EXPECT_LT(d, kContactOffsetTol_m);
+}
+
 TEST(ValidateGrasp, ContactSqueezePressesThePlannedContactsOnly) {
   SimParams params = gripper_params();
   params.squeeze_direction = SqueezeDirection::kContactNormals;
@@ -584,7 +631,7 @@ TEST(ObjectShapeFromString, RoundTripsEveryShape) {
 }
 
 TEST(ProtocolFromString, RoundTripsEveryProtocol) {
-  for (Protocol p : {Protocol::kQuick, Protocol::kThorough, Protocol::kFast})
+  for (Protocol p : {Protocol::kQuick, Protocol::kThorough, Protocol::kFast, Protocol::kStandard})
     EXPECT_EQ(parse_protocol(to_string(p)), p);
   EXPECT_THROW(parse_protocol("medium"), std::invalid_argument);
 }
@@ -615,6 +662,17 @@ TEST(ApplyProtocol, QuickIsTheDefaultAndThoroughTheLongProtocol) {
   EXPECT_EQ(fast.rock_frequency_hz, quick.rock_frequency_hz);
   EXPECT_EQ(fast.reach_start_fraction, quick.reach_start_fraction);
   EXPECT_EQ(fast.exit_on_failure, quick.exit_on_failure);
+  // Standard: the bounded close, quick's lift and exits, shake and rock along all axes at once.
+  const SimParams standard = sim_params_for(Protocol::kStandard);
+  EXPECT_EQ(standard.protocol, Protocol::kStandard);
+  EXPECT_GT(standard.reach_start_gap_m, 0.0);
+  EXPECT_GT(standard.squeeze_travel_m, 0.0);
+  EXPECT_LT(standard.squeeze_travel_m, 0.01);
+  EXPECT_EQ(standard.reach_start_fraction, 0.0);
+  EXPECT_TRUE(standard.shake_all_axes_at_once);
+  EXPECT_TRUE(standard.exit_on_failure);
+  EXPECT_EQ(quick.squeeze_travel_m, 0.0);
+  EXPECT_EQ(quick.reach_start_gap_m, 0.0);
   // Thorough: the protocol's numbers before the quick preset, and no early exit.
   const SimParams t = sim_params_for(Protocol::kThorough);
   EXPECT_EQ(t.protocol, Protocol::kThorough);

@@ -153,6 +153,14 @@ BENCHMARK_CAPTURE(BM_ProtocolMug, cordgrasp_sah_fast, "cordgrasp_sah", Protocol:
     ->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK_CAPTURE(BM_ProtocolMug, schunk_sah_fast, "schunk_sah", Protocol::kFast, 0.0)
     ->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK_CAPTURE(BM_ProtocolMug, cordgrasp_sah_standard, "cordgrasp_sah", Protocol::kStandard,
+                  0.0)
+    ->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK_CAPTURE(BM_ProtocolMug, schunk_sah_standard, "schunk_sah", Protocol::kStandard, 0.0)
+    ->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK_CAPTURE(BM_ProtocolMug, cordgrasp_sah_slippery_standard, "cordgrasp_sah",
+                  Protocol::kStandard, kSlipperyMu)
+    ->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK_CAPTURE(BM_ProtocolMug, cordgrasp_sah_slippery_fast, "cordgrasp_sah", Protocol::kFast,
                   kSlipperyMu)
     ->Unit(benchmark::kMillisecond)->Iterations(3);

@@ -90,8 +90,7 @@ void add_bench_command(CLI::App& app) {
                   "none")
       ->capture_default_str();
   add_enum_option(cmd, "--protocol", &opt->bench.protocol,
-                  "Physics protocol: quick, thorough (long phases, no early exits) or fast "
-                  "(1/480 s, all shake axes at once; harsher)");
+                  kProtocolHelp);
   cmd->add_option("--cache-dir", opt->bench.cache_dir,
                   "Directory caching convex decompositions on disk (by mesh hash)");
   cmd->add_option("--jobs,-j", opt->bench.jobs, "Attempts run in parallel threads")

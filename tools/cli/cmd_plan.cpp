@@ -128,7 +128,7 @@ void add_plan_command(CLI::App& app) {
       ->check(physics_tests(false))
       ->capture_default_str();
   add_enum_option(cmd, "--protocol", &opt->validation.protocol,
-                  "--validate: physics protocol, quick, thorough or fast");
+                  std::string("--validate: ") + kProtocolHelp);
   add_validation_options(cmd, opt->validation);
   add_sim_override_options(cmd, opt->validation.physics);
   cmd->add_option("--jobs,-j", opt->jobs,

@@ -40,8 +40,7 @@ void add_run_command(CLI::App& app) {
                   "Physics tests: any of lift,shake,gravity6, or none")
       ->capture_default_str();
   add_enum_option(cmd, "--protocol", &opt->run.protocol,
-                  "Physics protocol: quick, thorough (long phases, no early exits) or fast "
-                  "(1/480 s, all shake axes at once; harsher)");
+                  kProtocolHelp);
   cmd->add_option("--jobs,-j", opt->run.jobs,
                   "Grasps simulated at once, one physics world per thread (same results)")
       ->check(whole_number_in(1, 256))

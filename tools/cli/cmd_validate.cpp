@@ -42,8 +42,7 @@ void add_validate_command(CLI::App& app) {
       ->check(physics_tests(false))
       ->capture_default_str();
   add_enum_option(cmd, "--protocol", &opt->job.protocol,
-                  "Phase durations and early exits: quick, thorough (long phases, no early "
-                  "exits) or fast (1/480 s, all shake axes at once; docs/physics.md)");
+                  kProtocolHelp);
   cmd->add_option("--mu", opt->job.mu, "Friction coefficient (default: the plan's μ)")
       ->check(number_in(0.0, 10.0));
   add_sim_override_options(cmd, opt->job.physics, "the plan's validation record's, else ");
@@ -51,6 +50,9 @@ void add_validate_command(CLI::App& app) {
                   "Object collision shape: auto, hull, decomposition, gimpact")
       ->check(one_of({"auto", "hull", "decomposition", "gimpact"}))
       ->capture_default_str();
+  cmd->add_option("--physics", opt->job.physics_file,
+                  "Physics settings JSON merged over the protocol (any SimParams fields, or a "
+                  "sim.json whose parameters to repeat; docs/physics.md)");
   cmd->add_option("--cache-dir", opt->job.cache_dir,
                   "Directory caching convex decompositions on disk (by mesh hash)");
   cmd->add_option("--time-step", opt->job.time_step_s,

@@ -8,6 +8,9 @@
 
 namespace cordgrasp::cli {
 
+/// Help of every --protocol option: the presets and what sets them apart.
+extern const char* const kProtocolHelp;
+
 /// Adds --trials, --min-held, --require-held-as-planned, --budget, --squeeze-shift-limit,
 /// --min-gcp-distance, --min-gcp-distance-per-radius, --min-hand-turn, --trial-offset,
 /// --trial-turn and --trial-seed, bound to `v`.

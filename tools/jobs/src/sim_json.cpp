@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -25,6 +26,31 @@ constexpr int kFormatVersion = 2;
 
 nlohmann::json sim_params_to_json(const SimParams& p) { return params_to_json(p); }
 
+void merge_physics_file(const std::string& path, SimParams* params) {
+  std::ifstream in(path);
+  if (!in) throw InputError("physics settings '" + path + "': cannot be read");
+  nlohmann::json file;
+  try {
+    file = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError("physics settings '" + path + "': not JSON: " + e.what());
+  }
+  if (!file.is_object()) throw InputError("physics settings '" + path + "': expected an object");
+  nlohmann::json patch = file;
+  if (file.contains("format") && file.contains("parameters")) {
+    // A sim.json: its parameters block, less the keys that are no SimParams field.
+    const nlohmann::json fields = sim_params_to_json(*params);
+    patch = nlohmann::json::object();
+    for (const auto& item : file.at("parameters").items())
+      if (fields.contains(item.key())) patch[item.key()] = item.value();
+  }
+  nlohmann::json merged = sim_params_to_json(*params);
+  merged.merge_patch(patch);
+  SimParams out;
+  params_from_json(merged, "physics settings '" + path + "'", "", &out);
+  *params = out;
+}
+
 nlohmann::json sim_result_to_json(const SimResult& r, const HandModel& hand) {
   nlohmann::json phases = nlohmann::json::array();
   for (const PhaseResult& p : r.phases) {
@@ -47,11 +73,15 @@ nlohmann::json sim_result_to_json(const SimResult& r, const HandModel& hand) {
                       {"steps", p.steps}});
   }
   const PhaseResult* failed = r.failed_phase();
+  nlohmann::json offsets = nlohmann::json::array();
+  for (const double d : r.planned_contact_offsets_m)
+    offsets.push_back(std::isfinite(d) ? nlohmann::json(d) : nlohmann::json(nullptr));
   return {{"outcome", to_string(r.outcome)},
           {"failed_phase", failed ? nlohmann::json(failed->name) : nlohmann::json(nullptr)},
           {"detail", failed ? failed->detail : std::string()},
           {"preshape_overlap", r.preshape_overlap},
           {"wall_time_s", r.wall_time_s},
+          {"planned_contact_offsets_m", offsets},
           {"phases", phases}};
 }
 

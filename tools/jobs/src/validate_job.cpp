@@ -69,6 +69,7 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
       sim_overrides_or(opt.physics, plan.validation ? plan.validation->params.physics
                                                     : SimOverrides{}),
       &params);
+  if (!opt.physics_file.empty()) merge_physics_file(opt.physics_file, &params);
   params.object_shape = parse_object_shape(opt.object_shape);
   params.decomposition_cache_dir = opt.cache_dir;
   if (opt.time_step_s) params.time_step_s = *opt.time_step_s;

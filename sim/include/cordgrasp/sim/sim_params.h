@@ -87,9 +87,13 @@ enum class Protocol {
   /// ~3x cheaper than quick, but a harsher test that holds fewer grasps than thorough
   /// (docs/physics.md §6).
   kFast,
+  /// The bounded close: the fingers start a few millimetres short of the planned contacts,
+  /// close onto them and squeeze at most squeeze_travel_m past them with the weight-sized
+  /// force, until the object and the joints rest; short tests with early exits.
+  kStandard,
 };
 
-/// "quick", "thorough", "fast".
+/// "quick", "thorough", "fast", "standard".
 const char* to_string(Protocol protocol);
 
 /// Parses the names of to_string(Protocol). @throws std::invalid_argument otherwise.
@@ -181,6 +185,11 @@ struct SimParams {
   ObjectFixed object_fixed = ObjectFixed::kNever;
   /// Squeeze as the spring above (true) or with full effort up to the rest point (false).
   bool compliant_squeeze = true;
+  /// Bounded squeeze (> 0): each actor joint with a planned contact is driven to this far past
+  /// its planned contacts (travel / the joint's contact lever; prismatic: travel), pushing with
+  /// its squeeze effort, reach included, until it gets there; actor joints without a contact
+  /// hold the plan. Replaces squeeze_rad / squeeze_m and the spring; 0: off (preset) [m].
+  double squeeze_travel_m = 0.0;
   /// Joint servo gain: commanded speed = gain × error, capped [1/s]; stiff tracking.
   double servo_gain_per_s = 20.0;
   /// Speed cap of joints that only hold their planned value [rad/s; prismatic 0.1× in m/s].
@@ -203,7 +212,7 @@ struct SimParams {
   WorldFrame world_frame = WorldFrame::kApproachDown;
   double gravity_mps2 = 9.81;         ///< magnitude, along −z_W in lift/shake
   double settle_time_s = 0.05;        ///< settle: gravity off, preshape held
-  double squeeze_max_time_s = 0.5;    ///< close: squeeze stage time limit
+  double squeeze_max_time_s = 0.5;    ///< close: squeeze stage time limit (preset)
   double squeeze_ramp_s = 0.1;        ///< close: the squeeze effort ramps in linearly over this
   double squeeze_min_time_s = 0.05;   ///< close: stall is not tested before this
   /// close: actor joints slower than this × their |direction_speed| [rad/s or m/s]...
@@ -231,6 +240,11 @@ struct SimParams {
   double reach_start_fraction = 0.8;
   /// Clearance the fingers keep from the object at the reach start [m].
   double reach_start_clearance_m = 1e-3;
+  /// Reach start gap (> 0, instead of reach_start_fraction): every actor joint with a planned
+  /// contact starts gap / its contact lever short of the plan toward the preshape, the gap
+  /// doubling (three times, then the preshape) while a finger is closer than
+  /// reach_start_clearance_m to the object (preset) [m].
+  double reach_start_gap_m = 0.0;
 
   // --- Early exits --------------------------------------------------------------------------
   /// Rest exit: the lift's hold and each gravity6 direction end once the object has been at
@@ -287,7 +301,8 @@ struct SimParams {
     visit_fields(a, CORDGRASP_NVP(effort_scale), CORDGRASP_NVP(squeeze_weight_factor),
                  CORDGRASP_NVP(squeeze_direction),
                  CORDGRASP_NVP(object_fixed),
-                 CORDGRASP_NVP(compliant_squeeze), CORDGRASP_NVP(servo_gain_per_s),
+                 CORDGRASP_NVP(compliant_squeeze), CORDGRASP_NVP(squeeze_travel_m),
+                 CORDGRASP_NVP(servo_gain_per_s),
                  CORDGRASP_NVP(hold_speed), CORDGRASP_NVP(armature_kgm2),
                  CORDGRASP_NVP(armature_kg), CORDGRASP_NVP(lock_passive_joints),
                  CORDGRASP_NVP(hand_gravity_compensation), CORDGRASP_NVP(base_mass_scale),
@@ -302,6 +317,7 @@ struct SimParams {
                  CORDGRASP_NVP(rock_time_s), CORDGRASP_NVP(shake_all_axes_at_once),
                  CORDGRASP_NVP(gravity6_time_s),
                  CORDGRASP_NVP(reach_start_fraction), CORDGRASP_NVP(reach_start_clearance_m),
+                 CORDGRASP_NVP(reach_start_gap_m),
                  CORDGRASP_NVP(rest_exit_time_s), CORDGRASP_NVP(rest_drift_m),
                  CORDGRASP_NVP(rest_drift_rad), CORDGRASP_NVP(exit_on_failure),
                  CORDGRASP_NVP(no_contact_exit_time_s), CORDGRASP_NVP(held_translation_m),

@@ -73,6 +73,10 @@ struct SimResult {
   bool preshape_overlap = false;
   /// Close moved the object past SimParams::squeeze_shift_limit_m: slipped before the tests.
   bool rejected_in_close = false;
+  /// At the end of close, for each planned contact (Grasp::contacts, in order): the distance
+  /// in the object frame from the planned contact point to the nearest simulated hand–object
+  /// contact point [m]; NaN when the object touches nothing. Empty when close did not run.
+  std::vector<double> planned_contact_offsets_m;
   bool held() const { return outcome == Outcome::kHeld; }
   /// The phase called `name`, or nullptr.
   const PhaseResult* phase(const std::string& name) const;

@@ -94,6 +94,10 @@ class GraspSimulation {
 
   /// Current world state labelled `phase`.
   PhaseSnapshot snapshot(const std::string& phase) const;
+  /// For each planned contact of the grasp: the distance in the object frame from its point to
+  /// the nearest hand–object contact point Bullet has now (within contact_distance_m) [m];
+  /// NaN where there is none (SimResult::planned_contact_offsets_m).
+  std::vector<double> planned_contact_offsets() const;
   /// The object as simulated (mass, shape, parts).
   const SimObjectInfo& object_info() const;
   /// Object frame in world at the start.

@@ -29,6 +29,9 @@ struct ValidateJobParams {
   /// Mass, density, squeeze weight; unset: those the plan was validated with (its
   /// validation.parameters.physics, sim_overrides_or), else SimParams'.
   SimOverrides physics;
+  /// Physics settings file merged over the preset (merge_physics_file); the options below
+  /// override it. Empty: none.
+  std::string physics_file;
   std::string object_shape = "auto";
   std::string cache_dir;
   std::optional<double> time_step_s;
