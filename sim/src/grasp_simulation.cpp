@@ -28,6 +28,9 @@ constexpr int kHandGroup = 2;
 /// Joint torque per newton of contact force below which a joint does not press a contact
 /// (a lever of 1 µm) [N·m/N].
 constexpr double kNegligibleTorquePerNewton = 1e-6;
+/// Lever of revolute actor joints of a grasp without planned contacts in the bounded close: a
+/// finger's length [m].
+constexpr double kFingerLever_m = 0.05;
 /// Friction coefficient below which the weight-scaled squeeze stops growing [-].
 constexpr double kMinFrictionForForce = 0.1;
 
@@ -209,6 +212,14 @@ struct GraspSimulation::Impl {
   Eigen::VectorXd reach_start_with_gap();
   /// The bounded squeeze (SimParams::squeeze_travel_m > 0) in use.
   bool bounded() const { return params.squeeze_travel_m > 0.0; }
+  /// Lever of joint j in the bounded close: its lever on the planned contacts (prismatic: 1);
+  /// without any planned contact every joint's, a finger's length; 0: holds the plan.
+  double squeeze_lever(int j) const {
+    const bool prismatic = hand.joints[static_cast<size_t>(j)].type == JointType::kPrismatic;
+    if (grasp.contacts.empty()) return prismatic ? 1.0 : kFingerLever_m;
+    if (!(plan_lever[j] > 0.0)) return 0.0;
+    return prismatic ? 1.0 : plan_lever[j];
+  }
   /// Smallest hand–object distance reported by Bullet's narrow phase for the current poses
   /// (+inf when no pair is within its contact threshold) [m].
   double hand_object_distance();
@@ -369,9 +380,10 @@ Eigen::VectorXd GraspSimulation::Impl::reach_start_with_gap() {
   const auto start_for = [&](double gap_m) {
     Eigen::VectorXd q = grasp.q;
     for (const int j : actor_joints) {
-      if (!(plan_lever[j] > 0.0)) continue;
+      const double lever = squeeze_lever(j);
+      if (!(lever > 0.0)) continue;
       const double back = grasp.q_preshape[j] - grasp.q[j];
-      const double step = std::min(std::abs(back), gap_m / plan_lever[j]);
+      const double step = std::min(std::abs(back), gap_m / lever);
       q[j] += back >= 0.0 ? step : -step;
     }
     return clamp_to_limits(hand, apply_couplings(hand, q));
@@ -419,9 +431,10 @@ void GraspSimulation::Impl::step(const Eigen::Isometry3d& X_WB_next) {
     hand_body->motors[k]->setVelocityTarget(speed, 1.0);
     double effort = hand_body->effort_limit[static_cast<size_t>(j)];
     if (effort_cap[j] > 0.0) {
-      // Bounded squeeze: gentle past the plan, stiff (the full limit) when pushed back behind it.
+      // Bounded squeeze: gentle past the plan, stiffer (squeeze_hold_factor) when pushed back.
       const bool behind = hold_sign[j] * (grasp.q[j] - mb.getJointPos(i)) > 0.0;
-      if (!behind) effort = squeeze_fraction * std::min(effort, effort_cap[j]);
+      const double cap = behind ? params.squeeze_hold_factor * effort_cap[j] : effort_cap[j];
+      effort = squeeze_fraction * std::min(effort, cap);
     }
     if (spring_gain[j] > 0.0)
       effort = squeeze_fraction * std::min(effort, spring_gain[j] * std::abs(error));
@@ -725,7 +738,7 @@ PhaseResult GraspSimulation::close() {
   Eigen::VectorXd push = s.squeeze_efforts();
   if (s.bounded()) {
     for (const int j : s.actor_joints) {
-      if (!(s.plan_lever[j] > 0.0)) push[j] = 0.0;  // no planned contact: holds the plan
+      if (!(s.squeeze_lever(j) > 0.0)) push[j] = 0.0;  // no planned contact: holds the plan
       s.effort_cap[j] = std::abs(push[j]);
     }
   }
@@ -752,7 +765,7 @@ PhaseResult GraspSimulation::close() {
     if (s.bounded()) {
       // Bounded: squeeze_travel_m past the planned contacts at this joint's lever, pushing
       // with the capped effort all the way (no spring whose force fades near its rest point).
-      const double lever = joint.type == JointType::kPrismatic ? 1.0 : s.plan_lever[j];
+      const double lever = s.squeeze_lever(j);
       s.q_target[j] = s.grasp.q[j] + std::copysign(s.params.squeeze_travel_m / lever, push[j]);
       s.hold_sign[j] = push[j] > 0.0 ? 1.0 : -1.0;
       continue;

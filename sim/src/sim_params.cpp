@@ -86,7 +86,7 @@ void apply_protocol(Protocol protocol, SimParams* params) {
       p.gravity6_time_s = 0.5;
       p.reach_start_fraction = 0.0;
       p.reach_start_gap_m = 3e-3;
-      p.squeeze_travel_m = 3e-3;
+      p.squeeze_travel_m = 1e-3;
       p.squeeze_max_time_s = 0.3;
       p.rest_exit_time_s = 0.1;
       p.exit_on_failure = true;

@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <sstream>
+#include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -636,21 +639,55 @@ TEST(ProtocolFromString, RoundTripsEveryProtocol) {
   EXPECT_THROW(parse_protocol("medium"), std::invalid_argument);
 }
 
-TEST(ApplyProtocol, QuickIsTheDefaultAndThoroughTheLongProtocol) {
-  const SimParams quick = sim_params_for(Protocol::kQuick);
+/// "name=value;" for every field of a parameter struct, nested ones recursively: two structs
+/// with the same text have the same values.
+class FieldText {
+ public:
+  template <typename T>
+  void Visit(const NameValuePair<T>& nvp) {
+    text_ += std::string(nvp.name) + "=";
+    write(*nvp.value);
+    text_ += ";";
+  }
+  template <typename T>
+  static std::string of(T params) {
+    FieldText archive;
+    params.Serialize(&archive);
+    return archive.text_;
+  }
+
+ private:
+  template <typename T>
+  void write(const T& value) {
+    if constexpr (std::is_arithmetic_v<T>) {
+      std::ostringstream out;
+      out.precision(17);
+      out << value;
+      text_ += out.str();
+    } else if constexpr (std::is_enum_v<T>) {
+      text_ += std::to_string(static_cast<int>(value));
+    } else if constexpr (std::is_same_v<T, std::string>) {
+      text_ += value;
+    } else if constexpr (std::is_same_v<T, std::optional<double>>) {
+      text_ += value ? std::to_string(*value) : "unset";
+    } else {
+      text_ += "{" + of(value) + "}";
+    }
+  }
+  std::string text_;
+};
+
+std::string sim_params_to_text_for_test(const SimParams& params) {
+  return FieldText::of(params);
+}
+
+TEST(ApplyProtocol, StandardIsTheDefaultAndThoroughTheLongProtocol) {
+  // The defaults are the standard preset, field for field.
   const SimParams defaults;
-  EXPECT_EQ(defaults.protocol, Protocol::kQuick);
-  EXPECT_EQ(quick.lift_time_s, defaults.lift_time_s);
-  EXPECT_EQ(quick.lift_hold_s, defaults.lift_hold_s);
-  EXPECT_EQ(quick.shake_time_s, defaults.shake_time_s);
-  EXPECT_EQ(quick.rock_time_s, defaults.rock_time_s);
-  EXPECT_EQ(quick.rock_frequency_hz, defaults.rock_frequency_hz);
-  EXPECT_EQ(quick.gravity6_time_s, defaults.gravity6_time_s);
-  EXPECT_EQ(quick.reach_start_fraction, defaults.reach_start_fraction);
-  EXPECT_EQ(quick.rest_exit_time_s, defaults.rest_exit_time_s);
-  EXPECT_EQ(quick.exit_on_failure, defaults.exit_on_failure);
-  EXPECT_EQ(quick.time_step_s, defaults.time_step_s);
-  EXPECT_EQ(quick.shake_all_axes_at_once, defaults.shake_all_axes_at_once);
+  EXPECT_EQ(defaults.protocol, Protocol::kStandard);
+  EXPECT_EQ(sim_params_to_text_for_test(sim_params_for(Protocol::kStandard)),
+            sim_params_to_text_for_test(defaults));
+  const SimParams quick = sim_params_for(Protocol::kQuick);
   EXPECT_EQ(quick.time_step_s, 1.0 / 960.0);
   EXPECT_FALSE(quick.shake_all_axes_at_once);
   // Fast: quick's phases and early exits at 1/480 s, shake and rock along all axes at once.

@@ -56,10 +56,10 @@ void add_validation_options(CLI::App* cmd, ValidationParams& v) {
 }
 
 const char* const kProtocolHelp =
-    "Physics protocol (docs/physics.md §3): standard (the bounded close: fingers a few mm short "
-    "of the planned contacts close onto them and squeeze at most 3 mm past); quick (the "
-    "0.5 rad squeeze spring); thorough (long phases, no early exits); fast (quick at 1/480 s, "
-    "all shake axes at once)";
+    "Physics protocol (docs/physics.md §3): standard (the bounded close: the fingers start a "
+    "few mm short of the planned contacts, close onto them and squeeze at most a millimetre "
+    "past); quick (a squeeze spring 0.5 rad past the plan); thorough (quick's close, long "
+    "phases, no early exits); fast (quick at 1/480 s, all shake axes at once)";
 
 void add_sim_override_options(CLI::App* cmd, SimOverrides& o, const std::string& recorded_note) {
   cmd->add_option("--mass", o.mass_kg, "Object mass [kg] (default: " + recorded_note +

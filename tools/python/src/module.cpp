@@ -356,7 +356,7 @@ void bind_validate(py::module_& m) {
         }
         return json_to_py(sim_to_json(doc, *plan.hand));
       },
-      py::arg("plan"), py::arg("protocol") = "quick", py::arg("tests") = "lift,shake,gravity6",
+      py::arg("plan"), py::arg("protocol") = std::string(to_string(SimParams{}.protocol)), py::arg("tests") = "lift,shake,gravity6",
       py::arg("trials") = 1, py::arg("max_grasps") = -1, py::arg("jobs") = 1,
       py::arg("seed") = 1, py::arg("mass_kg") = py::none(), py::arg("density_kgm3") = py::none(),
       py::arg("squeeze_weight_factor") = py::none(),

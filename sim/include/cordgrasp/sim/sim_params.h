@@ -78,7 +78,8 @@ enum class WorldFrame {
 /// Preset of the protocol's phase durations and early exits (apply_protocol).
 enum class Protocol {
   /// Short phases (lift 0.5 s + hold ≤ 0.3 s, 0.5 s per shake and rock axis), early exits and
-  /// a reach from near the plan: the default (docs/notes/2026-12-01-quick-protocol.md).
+  /// a reach from near the plan, squeezing 0.5 rad past it: the default before kStandard
+  /// (docs/notes/2026-12-01-quick-protocol.md).
   kQuick,
   /// The long protocol (lift 1 s + hold 1 s, 1 s per shake and rock axis), no early exits,
   /// the reach from the preshape: the protocol before the quick one, verdict for verdict.
@@ -87,9 +88,10 @@ enum class Protocol {
   /// ~3x cheaper than quick, but a harsher test that holds fewer grasps than thorough
   /// (docs/physics.md §6).
   kFast,
-  /// The bounded close: the fingers start a few millimetres short of the planned contacts,
-  /// close onto them and squeeze at most squeeze_travel_m past them with the weight-sized
-  /// force, until the object and the joints rest; short tests with early exits.
+  /// The default: the bounded close (the fingers start a few millimetres short of the planned
+  /// contacts, close onto them and squeeze at most squeeze_travel_m past them with the
+  /// weight-sized force, until the object and the joints rest), quick's lift and early exits,
+  /// one shake and one rock segment along all axes at once (docs/physics.md §3a).
   kStandard,
 };
 
@@ -189,7 +191,10 @@ struct SimParams {
   /// its planned contacts (travel / the joint's contact lever; prismatic: travel), pushing with
   /// its squeeze effort, reach included, until it gets there; actor joints without a contact
   /// hold the plan. Replaces squeeze_rad / squeeze_m and the spring; 0: off (preset) [m].
-  double squeeze_travel_m = 0.0;
+  double squeeze_travel_m = 1e-3;
+  /// Bounded squeeze: a finger pushed back behind the plan resists with this × its squeeze
+  /// effort (at most its effort limit) [-].
+  double squeeze_hold_factor = 3.0;
   /// Joint servo gain: commanded speed = gain × error, capped [1/s]; stiff tracking.
   double servo_gain_per_s = 20.0;
   /// Speed cap of joints that only hold their planned value [rad/s; prismatic 0.1× in m/s].
@@ -206,13 +211,13 @@ struct SimParams {
   double base_mass_scale = 1000.0;
 
   // --- Protocol (docs/physics.md §3) -------------------------------------------------------
-  // Defaults: Protocol::kQuick; apply_protocol() sets every field marked "(preset)".
+  // Defaults: Protocol::kStandard; apply_protocol() sets every field marked "(preset)".
   /// The preset the "(preset)" fields were set from (recorded in sim.json).
-  Protocol protocol = Protocol::kQuick;
+  Protocol protocol = Protocol::kStandard;
   WorldFrame world_frame = WorldFrame::kApproachDown;
   double gravity_mps2 = 9.81;         ///< magnitude, along −z_W in lift/shake
   double settle_time_s = 0.05;        ///< settle: gravity off, preshape held
-  double squeeze_max_time_s = 0.5;    ///< close: squeeze stage time limit (preset)
+  double squeeze_max_time_s = 0.3;    ///< close: squeeze stage time limit (preset)
   double squeeze_ramp_s = 0.1;        ///< close: the squeeze effort ramps in linearly over this
   double squeeze_min_time_s = 0.05;   ///< close: stall is not tested before this
   /// close: actor joints slower than this × their |direction_speed| [rad/s or m/s]...
@@ -231,20 +236,20 @@ struct SimParams {
   /// Shake and rock along / about x_W, y_W and z_W at once: one segment of shake_time_s and
   /// one of rock_time_s, each axis's sine a third of a period after the last (a Lissajous
   /// path), instead of one segment per axis (preset).
-  bool shake_all_axes_at_once = false;
+  bool shake_all_axes_at_once = true;
   double gravity6_time_s = 0.5;       ///< gravity6: at most this per direction ±x, ±y, ±z,
                                       ///< hand fixed (preset)
   /// Reach start: before settle the fingers are put this fraction of the way from the preshape
   /// to the plan (0: the preshape), backing off in quarters to 0 while they would come closer
   /// than reach_start_clearance_m to the object's collision shape [-] (preset).
-  double reach_start_fraction = 0.8;
+  double reach_start_fraction = 0.0;
   /// Clearance the fingers keep from the object at the reach start [m].
   double reach_start_clearance_m = 1e-3;
   /// Reach start gap (> 0, instead of reach_start_fraction): every actor joint with a planned
   /// contact starts gap / its contact lever short of the plan toward the preshape, the gap
   /// doubling (three times, then the preshape) while a finger is closer than
   /// reach_start_clearance_m to the object (preset) [m].
-  double reach_start_gap_m = 0.0;
+  double reach_start_gap_m = 3e-3;
 
   // --- Early exits --------------------------------------------------------------------------
   /// Rest exit: the lift's hold and each gravity6 direction end once the object has been at
@@ -302,6 +307,7 @@ struct SimParams {
                  CORDGRASP_NVP(squeeze_direction),
                  CORDGRASP_NVP(object_fixed),
                  CORDGRASP_NVP(compliant_squeeze), CORDGRASP_NVP(squeeze_travel_m),
+                 CORDGRASP_NVP(squeeze_hold_factor),
                  CORDGRASP_NVP(servo_gain_per_s),
                  CORDGRASP_NVP(hold_speed), CORDGRASP_NVP(armature_kgm2),
                  CORDGRASP_NVP(armature_kg), CORDGRASP_NVP(lock_passive_joints),

@@ -35,7 +35,7 @@ struct BenchParams {
   std::uint64_t seed = 1;             ///< seed of repeat 0 (repeat r: seed + r)
   PlanJobParams job;                  ///< planner options (planner and seed set per attempt)
   std::string tests = "lift,shake";   ///< physics tests on each attempt's first grasp; "none"
-  Protocol protocol = Protocol::kQuick;  ///< physics protocol preset
+  Protocol protocol = SimParams{}.protocol;  ///< physics protocol preset
   std::string sim_cache_dir;          ///< on-disk convex decomposition cache ("" = memory only)
   /// Set: each attempt plans with plan_validated_grasps (its tests and protocol: from above)
   /// and fills the validated_* columns.

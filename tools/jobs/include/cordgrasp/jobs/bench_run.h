@@ -17,7 +17,7 @@ struct BenchRunParams {
   int repeats = 1;                      ///< attempts per object, hand and planner
   PlanJobParams job;                    ///< planner settings (seed: repeat r uses seed + r)
   std::string tests = "lift,shake";     ///< physics tests on each first grasp, or "none"
-  Protocol protocol = Protocol::kQuick; ///< physics protocol preset
+  Protocol protocol = SimParams{}.protocol; ///< physics protocol preset
   std::string cache_dir;                ///< on-disk convex decomposition cache ("" = none)
   HandLoadOptions hand_load;            ///< package:// directories of the hands' URDFs
   int jobs = 1;                         ///< threads

@@ -19,7 +19,7 @@ namespace cordgrasp {
 /// number of grasps wanted (PlanParams::grasps) come from PlanJobParams.
 struct ValidationParams {
   std::string tests = "lift,shake";     ///< physics tests of every trial (validate --tests)
-  Protocol protocol = Protocol::kQuick;  ///< physics protocol preset of every trial
+  Protocol protocol = SimParams{}.protocol;  ///< physics protocol preset of every trial
   int trials = 3;                        ///< trials per candidate: as planned, then nudged
   int min_held = 2;                      ///< accepted when held in at least this many trials
   /// ...of which the first, the grasp as planned (the one plan.json stores), must be one:

@@ -22,7 +22,7 @@ struct RunParams {
   std::string object;          ///< object mesh file or shipped object name
   PlanJobParams job;           ///< planner settings (grasps = 3 on the command line)
   std::string tests = "lift,shake";  ///< physics tests (lift, shake, gravity6) or "none"
-  Protocol protocol = Protocol::kQuick;  ///< physics protocol preset
+  Protocol protocol = SimParams{}.protocol;  ///< physics protocol preset
   int jobs = 1;                ///< physics threads (one world each); results independent of it
   /// Plan only grasps that hold (plan_validated_grasps, with `tests` and `protocol`); false:
   /// force-closure grasps as planned, validated afterwards. Ignored with tests "none".

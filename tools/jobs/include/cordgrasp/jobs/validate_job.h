@@ -24,7 +24,7 @@ struct ValidateJobParams {
   std::string units;
   std::optional<double> scale;  ///< object scale (default: the plan's)
   std::string tests = "lift,shake,gravity6";
-  Protocol protocol = Protocol::kQuick;  ///< preset applied before the options below
+  Protocol protocol = SimParams{}.protocol;  ///< preset applied before the options below
   std::optional<double> mu;
   /// Mass, density, squeeze weight; unset: those the plan was validated with (its
   /// validation.parameters.physics, sim_overrides_or), else SimParams'.
