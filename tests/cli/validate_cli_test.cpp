@@ -253,6 +253,50 @@ TEST_F(ValidateCli, ProtocolFieldOptionsOverrideThePresetAndAreRecordedInSimJson
   EXPECT_NE(bad.exit_code, 0);
 }
 
+TEST_F(ValidateCli, PhysicsFileFromAnEarlierSimJsonRepeatsItsRunExactly) {
+  const std::string first = (dir_ / "first.json").string();
+  const auto a = run_cordgrasp("validate --plan " + plan_path() +
+                               " --tests lift,shake --trials 2 -q --protocol thorough"
+                               " --time-step 0.0015 --rock-time 0.4 --out " + first);
+  ASSERT_EQ(a.exit_code, 0) << a.output;
+  // The default protocol differs from thorough: the file, not the preset, decides.
+  const auto b = run_cordgrasp("validate --plan " + plan_path() +
+                               " --tests lift,shake --trials 2 -q --physics " + first +
+                               " --out " + out_path());
+  ASSERT_EQ(b.exit_code, 0) << b.output;
+  std::ifstream in(first);
+  const nlohmann::json sim_a = nlohmann::json::parse(in), sim_b = read_out();
+  EXPECT_EQ(sim_b["parameters"], sim_a["parameters"]);
+  EXPECT_EQ(sim_b["parameters"]["protocol"], "thorough");
+  EXPECT_EQ(sim_b["parameters"]["time_step_s"], 0.0015);
+  EXPECT_EQ(without_timings(sim_b["grasps"]), without_timings(sim_a["grasps"]));
+  EXPECT_EQ(without_timings(sim_b["summary"]), without_timings(sim_a["summary"]));
+}
+
+TEST_F(ValidateCli, PhysicsFileSetsTheFieldsItNamesAndRejectsUnknownOnes) {
+  const std::string file = (dir_ / "physics.json").string();
+  std::ofstream(file) << R"({"squeeze_travel_m": 0.002, "decomposition": {"max_hull_vertices": 32}})";
+  const auto r = run_cordgrasp("validate --plan " + plan_path() + " --tests lift --grasps 1 -q" +
+                               " --physics " + file + " --out " + out_path());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json p = read_out()["parameters"];
+  EXPECT_EQ(p["squeeze_travel_m"], 0.002);
+  EXPECT_EQ(p["decomposition"]["max_hull_vertices"], 32);
+  // Every other field keeps the preset's value.
+  const SimParams standard = sim_params_for(Protocol::kStandard);
+  EXPECT_EQ(p["protocol"], to_string(standard.protocol));
+  EXPECT_EQ(p["reach_start_gap_m"], standard.reach_start_gap_m);
+  EXPECT_EQ(p["decomposition"]["concavity"], standard.decomposition.concavity);
+  std::filesystem::remove(out_path());
+  std::ofstream(file) << R"({"squeeze_travl_m": 0.002})";
+  expect_error("--physics " + file, "squeeze_travl_m");
+  std::ofstream(file) << R"({"squeeze_travel_m": "far"})";
+  expect_error("--physics " + file, "squeeze_travel_m");
+  std::ofstream(file) << "squeeze_travel_m: 0.002";
+  expect_error("--physics " + file, "not JSON");
+  expect_error("--physics " + (dir_ / "missing.json").string(), "missing.json");
+}
+
 TEST_F(ValidateCli, WarmstartAndHullVerticesAreOptionsRecordedInSimJson) {
   const auto r = run_cordgrasp("validate --plan " + plan_path() +
                                " --tests lift --grasps 1 -q --warmstart --hull-vertices 32 --out " +

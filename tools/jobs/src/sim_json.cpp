@@ -26,6 +26,21 @@ constexpr int kFormatVersion = 2;
 
 nlohmann::json sim_params_to_json(const SimParams& p) { return params_to_json(p); }
 
+namespace {
+
+/// Overlays `patch` onto `*base`: objects key by key (recursively), every other value, null
+/// included (an unset optional), replaces the base's (unlike JSON merge patch, where null
+/// deletes).
+void overlay_json(const nlohmann::json& patch, nlohmann::json* base) {
+  if (!patch.is_object() || !base->is_object()) {
+    *base = patch;
+    return;
+  }
+  for (const auto& item : patch.items()) overlay_json(item.value(), &(*base)[item.key()]);
+}
+
+}  // namespace
+
 void merge_physics_file(const std::string& path, SimParams* params) {
   std::ifstream in(path);
   if (!in) throw InputError("physics settings '" + path + "': cannot be read");
@@ -45,7 +60,7 @@ void merge_physics_file(const std::string& path, SimParams* params) {
       if (fields.contains(item.key())) patch[item.key()] = item.value();
   }
   nlohmann::json merged = sim_params_to_json(*params);
-  merged.merge_patch(patch);
+  overlay_json(patch, &merged);
   SimParams out;
   params_from_json(merged, "physics settings '" + path + "'", "", &out);
   *params = out;
