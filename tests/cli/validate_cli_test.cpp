@@ -371,6 +371,15 @@ TEST_F(ValidateCli, TrialsRepeatEachGraspWithTheHandNudgedAndShowAPointContactPi
   ASSERT_EQ(trials["count"], 3);
   ASSERT_EQ(trials["outcomes"].size(), 3u);
   EXPECT_EQ(trials["outcomes"][0], sim["grasps"][0]["outcome"]);  // trial 0: the plan itself
+  // Each trial's motion of the object while the hand closed; trial 0's is the close phase's.
+  ASSERT_EQ(trials["close_shift_m"].size(), 3u);
+  ASSERT_EQ(trials["close_turn_rad"].size(), 3u);
+  const auto& close = sim["grasps"][0]["phases"][1];
+  ASSERT_EQ(close["name"], "close");
+  EXPECT_EQ(trials["close_shift_m"][0], close["translation_m"]);
+  EXPECT_EQ(trials["close_turn_rad"][0], close["rotation_rad"]);
+  for (const auto& shift : trials["close_shift_m"]) EXPECT_GE(shift.get<double>(), 0.0);
+  EXPECT_NE(trials["close_shift_m"][1], trials["close_shift_m"][0]);  // another start
   EXPECT_EQ(sim["parameters"]["trials"], 3);
   EXPECT_EQ(sim["parameters"]["trial_offset_m"], 0.001);
   EXPECT_EQ(sim["summary"]["trials"], 3);

@@ -1,8 +1,9 @@
-// report.md of `cordgrasp run`: the physics cell of the grasp table.
+// report.md of `cordgrasp run`: the physics cells of the grasp table.
 #include "cordgrasp/jobs/run_report.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 namespace cordgrasp {
@@ -43,6 +44,22 @@ TEST(RunReport, PhysicsCellSaysWhenThePreshapeHandOverlapsTheCollisionShape) {
   const std::string plain = run_report_markdown(clear.report);
   EXPECT_NE(plain.find("| dropped in close |"), std::string::npos) << plain;
   EXPECT_EQ(plain.find("overlaps"), std::string::npos) << plain;
+}
+
+TEST(RunReport, GraspRowGivesTheMotionWhileClosingAndTheFarthestPlannedContact) {
+  DroppedInClose run(false);
+  PhaseResult& close = run.sim.results[0].phases[1];
+  close.outcome = Outcome::kHeld;
+  close.translation_m = 0.0021;
+  close.rotation_rad = 0.05;  // 2.9°
+  run.sim.results[0].outcome = Outcome::kHeld;
+  run.sim.results[0].planned_contact_offsets_m = {0.0004, 0.0013};
+  const std::string md = run_report_markdown(run.report);
+  EXPECT_NE(md.find("closing: shift [mm], turn [°]"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 2.1, 2.9 | 1.3 |"), std::string::npos) << md;
+  // A planned contact the object does not touch: no distance.
+  run.sim.results[0].planned_contact_offsets_m = {0.0004, std::nan("")};
+  EXPECT_NE(run_report_markdown(run.report).find("| 2.1, 2.9 | – |"), std::string::npos);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "cordgrasp/jobs/plan_validated_grasps.h"
 #include "cordgrasp/jobs/text_format.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -102,8 +103,9 @@ std::string run_report_markdown(const RunReport& rep) {
   }
   const bool validated = plan.validation.has_value();
   md << "\n\n| # | α [rad] | ε | χ [mm²] | region | contacts | physics | max penetration [mm] |"
+        " closing: shift [mm], turn [°] | planned contacts to simulated, max [mm] |"
      << (validated ? " held trials | squeeze shift [mm] |" : "") << "\n"
-     << "|---|---|---|---|---|---|---|---|" << (validated ? "---|---|" : "") << "\n";
+     << "|---|---|---|---|---|---|---|---|---|---|" << (validated ? "---|---|" : "") << "\n";
   for (int k = 0; k < n; ++k) {
     const Grasp& g = plan.grasps[static_cast<size_t>(k)];
     md << "| " << k << " | " << num(g.alpha_rad, "%.3f") << " | " << num(g.epsilon, "%.4f")
@@ -117,9 +119,18 @@ std::string run_report_markdown(const RunReport& rep) {
     if (r) {
       double pen = 0.0;
       for (const PhaseResult& p : r->phases) pen = std::max(pen, p.max_penetration_m);
-      md << outcome_text(*r) << " | " << num(pen * 1e3, "%.2f") << " |";
+      md << outcome_text(*r) << " | " << num(pen * 1e3, "%.2f") << " | ";
+      if (const PhaseResult* close = r->phase("close"))
+        md << num(close->translation_m * 1e3, "%.1f") << ", "
+           << num(close->rotation_rad * 180.0 / M_PI, "%.1f");
+      else
+        md << "–";
+      double farthest = r->planned_contact_offsets_m.empty() ? std::nan("") : 0.0;
+      for (const double d : r->planned_contact_offsets_m)
+        farthest = std::isfinite(d) ? std::max(farthest, d) : d;  // NaN: touches nothing
+      md << " | " << (std::isfinite(farthest) ? num(farthest * 1e3, "%.1f") : "–") << " |";
     } else {
-      md << "– | – |";
+      md << "– | – | – | – |";
     }
     if (validated) {
       const GraspValidation& gv = plan.validation->grasps[static_cast<size_t>(k)];

@@ -119,9 +119,17 @@ nlohmann::json sim_to_json(const SimDocument& doc, const HandModel& hand) {
       nlohmann::json names = nlohmann::json::array();
       for (Outcome o : trials) names.push_back(to_string(o));
       const int trials_held = count_held(trials);
+      nlohmann::json shifts = nlohmann::json::array(), turns = nlohmann::json::array();
+      if (k < doc.trial_close_motion.size())
+        for (const auto& [shift_m, turn_rad] : doc.trial_close_motion[k]) {
+          shifts.push_back(std::isfinite(shift_m) ? nlohmann::json(shift_m) : nlohmann::json());
+          turns.push_back(std::isfinite(turn_rad) ? nlohmann::json(turn_rad) : nlohmann::json());
+        }
       g["trials"] = {{"count", static_cast<int>(trials.size())},
                      {"held", trials_held},
-                     {"outcomes", names}};
+                     {"outcomes", names},
+                     {"close_shift_m", shifts},
+                     {"close_turn_rad", turns}};
       total_trials += static_cast<int>(trials.size());
       held_trials += trials_held;
     }

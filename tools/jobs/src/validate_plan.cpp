@@ -1,5 +1,6 @@
 #include "cordgrasp/jobs/validate_plan.h"
 
+#include <cmath>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -12,6 +13,13 @@
 
 namespace cordgrasp {
 namespace {
+
+/// {shift [m], turn [rad]} of the object in the hand during close; NaN when close did not run.
+std::pair<double, double> close_motion(const SimResult& r) {
+  const PhaseResult* close = r.phase("close");
+  if (close == nullptr) return {std::nan(""), std::nan("")};
+  return {close->translation_m, close->rotation_rad};
+}
 
 /// Keeps only the grasps of `doc` with keep[k] set (results, grasps, indices, trials).
 void keep_grasps(SimDocument& doc, const std::vector<char>& keep) {
@@ -26,12 +34,15 @@ void keep_grasps(SimDocument& doc, const std::vector<char>& keep) {
     doc.grasps[to] = std::move(doc.grasps[k]);
     doc.grasp_indices[to] = doc.grasp_indices[k];
     if (k < doc.trial_outcomes.size()) doc.trial_outcomes[to] = std::move(doc.trial_outcomes[k]);
+    if (k < doc.trial_close_motion.size())
+      doc.trial_close_motion[to] = std::move(doc.trial_close_motion[k]);
     ++to;
   }
   doc.results.resize(to);
   doc.grasps.resize(to);
   doc.grasp_indices.resize(to);
   if (!doc.trial_outcomes.empty()) doc.trial_outcomes.resize(to);
+  if (!doc.trial_close_motion.empty()) doc.trial_close_motion.resize(to);
 }
 
 }  // namespace
@@ -96,9 +107,12 @@ void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const Hand
   doc.trial_outcomes.assign(doc.results.size(), {});
   const int total = static_cast<int>(doc.results.size());
   const int per_grasp = trials - 1;  // trial 0 is doc.results[k]
+  doc.trial_close_motion.assign(doc.results.size(), {});
   for (int k = 0; k < total; ++k) {
-    doc.trial_outcomes[static_cast<size_t>(k)].assign(static_cast<size_t>(trials),
-                                                      doc.results[static_cast<size_t>(k)].outcome);
+    const SimResult& first = doc.results[static_cast<size_t>(k)];
+    doc.trial_outcomes[static_cast<size_t>(k)].assign(static_cast<size_t>(trials), first.outcome);
+    doc.trial_close_motion[static_cast<size_t>(k)].assign(static_cast<size_t>(trials),
+                                                          close_motion(first));
   }
   // Every (grasp, trial) pair is a task of its own; a grasp is reported once all its trials are.
   std::vector<int> trials_left(static_cast<size_t>(total), per_grasp);
@@ -113,8 +127,9 @@ void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const Hand
     const int k = task / per_grasp, t = 1 + task % per_grasp;
     const Grasp& planned = plan.grasps[static_cast<size_t>(doc.grasp_indices[static_cast<size_t>(k)])];
     const Grasp g = perturbed_grasp(planned, perturbation, seed + 1000 * k + t);
-    doc.trial_outcomes[static_cast<size_t>(k)][static_cast<size_t>(t)] =
-        validate_grasp(mesh, hand, g, doc.params, doc.tests).outcome;
+    const SimResult r = validate_grasp(mesh, hand, g, doc.params, doc.tests);
+    doc.trial_outcomes[static_cast<size_t>(k)][static_cast<size_t>(t)] = r.outcome;
+    doc.trial_close_motion[static_cast<size_t>(k)][static_cast<size_t>(t)] = close_motion(r);
     bool grasp_done = false;
     {
       const std::lock_guard<std::mutex> lock(left_mutex);

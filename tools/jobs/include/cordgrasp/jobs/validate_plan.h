@@ -37,6 +37,9 @@ struct SimDocument {
   /// Repeated trials (add_perturbed_trials): per grasp, the outcome of every trial; trial 0 is
   /// results[k]. Empty when each grasp was simulated once.
   std::vector<std::vector<Outcome>> trial_outcomes;
+  /// How far the object moved in the hand while it closed, per grasp and trial as
+  /// trial_outcomes: {shift [m], turn [rad]} of the close phase (NaN when close did not run).
+  std::vector<std::vector<std::pair<double, double>>> trial_close_motion;
   PerturbationParams trial_perturbation;
   std::uint64_t trial_seed = 1;
   int trials = 1;  ///< simulations asked for per grasp (add_perturbed_trials)
