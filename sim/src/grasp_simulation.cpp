@@ -143,8 +143,8 @@ struct GraspSimulation::Impl {
   /// Effort cap of the bounded squeeze (SimParams::squeeze_travel_m) [N·m or N]; 0: the limit.
   Eigen::VectorXd effort_cap;
   /// Bounded squeeze, once the fingers have reached the plan: +1/−1 for joints that push
-  /// toward larger/smaller q, which then hold the plan with their full effort limit when pushed
-  /// back behind it; 0: the cap applies both ways.
+  /// toward larger/smaller q, which resist with squeeze_hold_factor × their cap when pushed
+  /// back behind the plan; 0: the cap applies both ways.
   Eigen::VectorXd hold_sign;
   /// Levers of the joints on the planned contacts at the plan (contact_levers) [m or -].
   Eigen::VectorXd plan_lever;
@@ -210,6 +210,9 @@ struct GraspSimulation::Impl {
   /// contact gap / lever short of the plan toward the preshape, the gap doubling while the
   /// hand is within reach_start_clearance_m of the object; the preshape when none is clear.
   Eigen::VectorXd reach_start_with_gap();
+  /// Puts the hand's joints at q (base at X_WB_cmd) and empties the contact manifolds, whose
+  /// points would otherwise describe the previous pose.
+  void place_hand_at(const Eigen::VectorXd& q);
   /// The bounded squeeze (SimParams::squeeze_travel_m > 0) in use.
   bool bounded() const { return params.squeeze_travel_m > 0.0; }
   /// Lever of joint j in the bounded close: its lever on the planned contacts (prismatic: 1);
@@ -326,16 +329,11 @@ GraspSimulation::Impl::Impl(const Mesh& mesh, const HandModel& h, const Grasp& g
   q_start = grasp.q_preshape;
   if (params.reach_start_gap_m > 0.0) {
     q_start = reach_start_with_gap();
-    bullet::place_hand(*hand_body, X_WB_cmd, q_start);
-    for (int m = 0; m < dispatcher->getNumManifolds(); ++m)
-      dispatcher->getManifoldByIndexInternal(m)->clearManifold();
+    place_hand_at(q_start);
   } else if (params.reach_start_fraction > 0.0) {
     const double f = reach_start_fraction_clear();
     q_start = grasp.q_preshape + f * (grasp.q - grasp.q_preshape);
-    bullet::place_hand(*hand_body, X_WB_cmd, q_start);
-    // The probes leave contact points in the manifolds: start the simulation without them.
-    for (int m = 0; m < dispatcher->getNumManifolds(); ++m)
-      dispatcher->getManifoldByIndexInternal(m)->clearManifold();
+    place_hand_at(q_start);  // the probes' contact points must not carry into the simulation
   }
 
   q_target = q_start;
@@ -366,14 +364,16 @@ double GraspSimulation::Impl::reach_start_fraction_clear() {
   const double f = std::min(1.0, params.reach_start_fraction);
   for (int quarters = 4; quarters >= 1; --quarters) {
     const double fraction = f * quarters / 4.0;
-    bullet::place_hand(*hand_body, X_WB_cmd,
-                       grasp.q_preshape + fraction * (grasp.q - grasp.q_preshape));
-    // Fresh manifolds: points kept from an earlier probe would measure the wrong pose.
-    for (int m = 0; m < dispatcher->getNumManifolds(); ++m)
-      dispatcher->getManifoldByIndexInternal(m)->clearManifold();
+    place_hand_at(grasp.q_preshape + fraction * (grasp.q - grasp.q_preshape));
     if (hand_object_distance() >= params.reach_start_clearance_m) return fraction;
   }
   return 0.0;
+}
+
+void GraspSimulation::Impl::place_hand_at(const Eigen::VectorXd& q) {
+  bullet::place_hand(*hand_body, X_WB_cmd, q);
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m)
+    dispatcher->getManifoldByIndexInternal(m)->clearManifold();
 }
 
 Eigen::VectorXd GraspSimulation::Impl::reach_start_with_gap() {
@@ -390,9 +390,7 @@ Eigen::VectorXd GraspSimulation::Impl::reach_start_with_gap() {
   };
   for (int doubling = 0; doubling < 4; ++doubling) {
     const Eigen::VectorXd q = start_for(params.reach_start_gap_m * std::ldexp(1.0, doubling));
-    bullet::place_hand(*hand_body, X_WB_cmd, q);
-    for (int m = 0; m < dispatcher->getNumManifolds(); ++m)
-      dispatcher->getManifoldByIndexInternal(m)->clearManifold();
+    place_hand_at(q);
     if (hand_object_distance() >= params.reach_start_clearance_m) return q;
   }
   return grasp.q_preshape;
