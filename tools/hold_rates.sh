@@ -16,7 +16,7 @@
 # the hand nudged; held / not-held of marginal grasps is chaotic, docs/physics.md; default 1),
 # YCB_MASSES (1: the YCB objects get their measured masses, table below; 0: density × volume
 # like the other sets; default 1), VALIDATE_ARGS (more `cordgrasp validate` options, split at
-# spaces, e.g. "--squeeze-direction contacts"; default none).
+# spaces, e.g. "--protocol thorough --physics levers.yaml"; default none).
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 OUT="${1:-/tmp/cordgrasp_hold_rates}"

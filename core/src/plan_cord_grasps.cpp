@@ -63,7 +63,7 @@ PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand
     }
     const GraspRegion& region = regions[order[rank]];
     ++stats.regions_processed;
-    const double travel = approach_travel_m(mesh, region) + params.candidate.approach_extra_m;
+    const double travel = approach_travel_m(mesh, region);
     for (int roll = 0; roll < (params.roll_retry ? 2 : 1); ++roll) {
       if (stats.attempts >= params.max_attempts) break;
       const Eigen::Isometry3d X_OG = gcp_pose_for_region(region, ctx.setup.R_GH, roll == 1);

@@ -55,13 +55,6 @@ bool attempt_grasp(const HandModel& hand, HandObjectCollider& collider, const Pl
   }
   const CandidateMeasures measures =
       candidate_measures(fr.contacts, ctx.setup, ctx.com_O, ctx.radius_m);
-  const CandidateParams& filter = params.candidate;
-  if (quality.epsilon < filter.min_epsilon || measures.fingers_in_contact < filter.min_fingers ||
-      (filter.max_com_offset > 0.0 && measures.com_offset > filter.max_com_offset) ||
-      (filter.max_push_imbalance > 0.0 && measures.push_imbalance > filter.max_push_imbalance)) {
-    ++stats.filtered;
-    return false;
-  }
   grasp = Grasp{};
   grasp.X_OB = fr.X_OB;
   grasp.X_OG = fr.X_OG;

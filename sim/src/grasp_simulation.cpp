@@ -9,7 +9,6 @@
 #include <limits>
 #include <stdexcept>
 
-#include "cordgrasp/core/balanced_contact_forces.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/sim/validate_grasp.h"
 #include "hand_multibody.h"
@@ -25,9 +24,6 @@ using bullet::to_bt;
 constexpr int kObjectGroup = 1;
 constexpr int kHandGroup = 2;
 
-/// Joint torque per newton of contact force below which a joint does not press a contact
-/// (a lever of 1 µm) [N·m/N].
-constexpr double kNegligibleTorquePerNewton = 1e-6;
 /// Lever of revolute actor joints of a grasp without planned contacts in the bounded close: a
 /// finger's length [m].
 constexpr double kFingerLever_m = 0.05;
@@ -176,8 +172,7 @@ struct GraspSimulation::Impl {
   void step(const Eigen::Isometry3d& X_WB_next);
   void contacts(int& count, double& max_penetration) const;
   bool unstable() const;
-  /// Squeeze effort of every actor joint [N·m or N], signed (+: toward larger q); 0: holds
-  /// the plan (SimParams::squeeze_direction).
+  /// Squeeze effort of every actor joint [N·m or N], signed (+: toward larger q).
   Eigen::VectorXd squeeze_efforts() const;
   /// `push` scaled down, all actor joints alike, to the weight-proportional grasp force of
   /// SimParams::squeeze_weight_factor (unchanged when the factor is 0 or the limits are weaker).
@@ -186,8 +181,6 @@ struct GraspSimulation::Impl {
   PhaseSnapshot snapshot(const std::string& phase) const;
   /// Starts phase `name` (its wall clock too) with gravity `g_W` [m/s²].
   void begin(PhaseResult& r, const std::string& name, const Eigen::Vector3d& g_W);
-  /// Makes the object immovable (zero linear and angular factors) or free again, at rest.
-  void set_object_fixed(bool fixed);
   /// Sets the world's gravity [m/s²].
   void set_gravity(const Eigen::Vector3d& g_W);
   /// Fills the pose change and contacts relative to `X_BO_reference`, classifies.
@@ -535,15 +528,6 @@ void GraspSimulation::Impl::begin(PhaseResult& r, const std::string& name,
   set_gravity(g_W);
 }
 
-void GraspSimulation::Impl::set_object_fixed(bool fixed) {
-  const btVector3 factor = fixed ? btVector3(0, 0, 0) : btVector3(1, 1, 1);
-  object->body->setLinearFactor(factor);
-  object->body->setAngularFactor(factor);
-  object->body->setLinearVelocity(btVector3(0, 0, 0));
-  object->body->setAngularVelocity(btVector3(0, 0, 0));
-  object->body->activate(true);
-}
-
 void GraspSimulation::Impl::set_gravity(const Eigen::Vector3d& g_W) {
   gravity = g_W;
   world->setGravity(to_bt(g_W));
@@ -656,32 +640,11 @@ PhaseResult GraspSimulation::settle() {
 }
 
 Eigen::VectorXd GraspSimulation::Impl::squeeze_efforts() const {
+  // Every actor joint pushes toward closing with its effort limit, scaled to the weight.
   Eigen::VectorXd push = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(hand.joints.size()));
-  std::vector<Eigen::Vector3d> forces;
-  if (params.squeeze_direction == SqueezeDirection::kBalanced) {
-    BalancedContactForces balanced = balanced_contact_forces(grasp.contacts, params.contact.mu);
-    if (balanced.within_cones()) forces = std::move(balanced.forces_O);
-  } else if (params.squeeze_direction == SqueezeDirection::kContactNormals) {
-    for (const Contact& c : grasp.contacts) forces.push_back(-c.n_O);
-  }
-  // kActor, and kBalanced where no balanced forces exist: every actor joint at full effort.
-  // kContactNormals without planned contacts presses nothing.
-  if (params.squeeze_direction != SqueezeDirection::kContactNormals && forces.empty()) {
-    for (size_t a = 0; a < actor_joints.size(); ++a)
-      push[actor_joints[a]] =
-          actor_sign[a] * hand_body->effort_limit[static_cast<size_t>(actor_joints[a])];
-    return scaled_to_weight(push);
-  }
-  // τ = f·Σ Jᵀ f_c, with the largest common scale f that no actor joint's effort limit caps.
-  const Eigen::VectorXd tau =
-      contact_force_torques(hand, grasp.q, grasp.X_OB, grasp.contacts, forces);
-  double force = std::numeric_limits<double>::infinity();
-  for (const int j : actor_joints)
-    if (std::abs(tau[j]) > kNegligibleTorquePerNewton)
-      force = std::min(force, hand_body->effort_limit[static_cast<size_t>(j)] / std::abs(tau[j]));
-  if (!std::isfinite(force)) return push;  // no contact on a finger: nothing to press
-  for (const int j : actor_joints)
-    if (std::abs(tau[j]) > kNegligibleTorquePerNewton) push[j] = force * tau[j];
+  for (size_t a = 0; a < actor_joints.size(); ++a)
+    push[actor_joints[a]] =
+        actor_sign[a] * hand_body->effort_limit[static_cast<size_t>(actor_joints[a])];
   return scaled_to_weight(push);
 }
 
@@ -710,7 +673,6 @@ PhaseResult GraspSimulation::close() {
   PhaseResult r;
   s.begin(r, "close", Eigen::Vector3d::Zero());
   const int n = static_cast<int>(s.hand.joints.size());
-  if (s.params.object_fixed != ObjectFixed::kNever) s.set_object_fixed(true);
   // Reach: every driven joint follows a minimum-jerk path from where it is to the plan, all
   // arriving together, so the fingers meet the object at once at the planned contacts.
   const Eigen::VectorXd q0 = bullet::hand_joint_positions(*s.hand_body, n);
@@ -749,7 +711,6 @@ PhaseResult GraspSimulation::close() {
     s.step(X_WB0);
   }
   s.qd_feedforward.setZero();
-  if (s.params.object_fixed == ObjectFixed::kReach) s.set_object_fixed(false);
   // Squeeze: every pushing actor joint becomes a spring with its rest point `squeeze` past the
   // plan in the direction it pushes (not clamped: the joint limits stop the finger) and
   // stiffness effort / squeeze, so it pushes with its squeeze effort at the planned value and
@@ -804,7 +765,6 @@ PhaseResult GraspSimulation::close() {
   if (r.outcome == Outcome::kSlipped) r.outcome = Outcome::kHeld;
   s.X_BO_ref = s.X_BO();
   s.closed = true;
-  if (s.params.object_fixed == ObjectFixed::kClose) s.set_object_fixed(false);
   // From now on the servos keep squeezing toward the same targets.
   return r;
 }

@@ -1,6 +1,12 @@
 #include "cordgrasp/sim/sim_params.h"
 
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <sstream>
 #include <stdexcept>
+#include <string>
+#include <type_traits>
 
 #include "cordgrasp/core/enum_names.h"
 
@@ -12,36 +18,90 @@ constexpr EnumName<ObjectShape> kObjectShapeNames[] = {
     {ObjectShape::kConvexHull, "hull"},
     {ObjectShape::kDecomposition, "decomposition"},
     {ObjectShape::kGImpact, "gimpact"}};
-constexpr EnumName<SqueezeDirection> kSqueezeDirectionNames[] = {
-    {SqueezeDirection::kActor, "actor"}, {SqueezeDirection::kContactNormals, "contacts"},
-    {SqueezeDirection::kBalanced, "balanced"}};
-constexpr EnumName<ObjectFixed> kObjectFixedNames[] = {{ObjectFixed::kNever, "never"},
-                                                       {ObjectFixed::kReach, "reach"},
-                                                       {ObjectFixed::kClose, "close"}};
 constexpr EnumName<Protocol> kProtocolNames[] = {{Protocol::kQuick, "quick"},
                                                  {Protocol::kThorough, "thorough"},
-                                                 {Protocol::kFast, "fast"},
                                                  {Protocol::kStandard, "standard"}};
 constexpr EnumName<WorldFrame> kWorldFrameNames[] = {{WorldFrame::kApproachDown, "approach_down"},
                                                      {WorldFrame::kObject, "object"}};
 
+/// Ranges of the SimParams fields (nested ones by their own names) that the simulation needs;
+/// every other number must be finite and not negative, but for kMayBeNegative.
+struct FieldRange {
+  const char* name;
+  double lo, hi;
+};
+constexpr FieldRange kFieldRanges[] = {
+    {"time_step_s", 1e-5, 0.02},         {"solver_iterations", 1, 10000},
+    {"erp", 0, 1},                       {"friction_erp", 0, 1},
+    {"gear_erp", 0, 1},                  {"mu", 0, 10},
+    {"cone_edges", 3, 64},               {"soft_finger_radius_m", 0, 0.0499},
+    {"contact_stiffness_Npm", 0, 1e9},   {"contact_damping_Nspm", 0, 1e7},
+    {"density_kgm3", 1, 1e5},            {"mass_kg", 1e-6, 1e4},
+    {"concavity", 0, 1},                 {"max_hull_vertices", 4, 100000},
+    {"max_input_triangles", -1, 1e7},    {"effort_scale", 1e-3, 100},
+    {"squeeze_rad", 0, 3.2},             {"reach_start_fraction", 0, 1},
+    {"lift_time_s", 1e-3, 100},          {"lift_hold_s", 0, 100},
+    {"shake_time_s", 1e-3, 100},         {"rock_time_s", 1e-3, 100},
+    {"shake_frequency_hz", 1e-3, 100},   {"rock_frequency_hz", 1e-3, 100},
+    {"gravity6_time_s", 1e-3, 100},      {"settle_time_s", 0, 100},
+    {"squeeze_max_time_s", 0, 100},      {"rest_exit_time_s", 0, 100},
+    {"trace_interval_s", 0, 10},         {"armature_kgm2", 0, 1e3},
+};
+constexpr const char* kMayBeNegative[] = {"connect_distance"};
+
+/// Archive of check_sim_params: visits every field, nested structs by their own fields.
+class RangeCheck {
+ public:
+  template <typename T>
+  void Visit(const NameValuePair<T>& nvp) {
+    check(nvp.name, *nvp.value);
+  }
+
+ private:
+  template <typename T>
+  void check(const char* name, const T& value) {
+    if constexpr (std::is_same_v<T, bool> || std::is_enum_v<T> ||
+                  std::is_same_v<T, std::string>) {
+      return;
+    } else if constexpr (std::is_arithmetic_v<T>) {
+      check_number(name, static_cast<double>(value));
+    } else if constexpr (std::is_same_v<T, std::optional<double>>) {
+      if (value) check_number(name, *value);
+    } else {
+      T copy = value;  // Serialize takes field addresses
+      copy.Serialize(this);
+    }
+  }
+  static void check_number(const char* name, double value) {
+    const std::string field(name);
+    std::ostringstream why;
+    for (const FieldRange& r : kFieldRanges)
+      if (field == r.name) {
+        if (std::isfinite(value) && value >= r.lo && value <= r.hi) return;
+        why << field << ": " << value << " is not in [" << r.lo << ", " << r.hi << "]";
+        throw std::invalid_argument(why.str());
+      }
+    if (!std::isfinite(value)) throw std::invalid_argument(field + ": not a finite number");
+    for (const char* n : kMayBeNegative)
+      if (field == n) return;
+    if (value < 0.0) {
+      why << field << ": " << value << " is negative";
+      throw std::invalid_argument(why.str());
+    }
+  }
+};
+
 }  // namespace
+
+void check_sim_params(const SimParams& params) {
+  RangeCheck check;
+  SimParams copy = params;
+  copy.Serialize(&check);
+}
 
 const char* to_string(ObjectShape shape) { return enum_to_string(shape, kObjectShapeNames); }
 ObjectShape parse_object_shape(const std::string& text) {
   return parse_enum(text, kObjectShapeNames, "object shape");
-}
-
-const char* to_string(SqueezeDirection direction) {
-  return enum_to_string(direction, kSqueezeDirectionNames);
-}
-SqueezeDirection parse_squeeze_direction(const std::string& text) {
-  return parse_enum(text, kSqueezeDirectionNames, "squeeze direction");
-}
-
-const char* to_string(ObjectFixed fixed) { return enum_to_string(fixed, kObjectFixedNames); }
-ObjectFixed parse_object_fixed(const std::string& text) {
-  return parse_enum(text, kObjectFixedNames, "object fixed");
 }
 
 const char* to_string(WorldFrame frame) { return enum_to_string(frame, kWorldFrameNames); }
@@ -59,14 +119,13 @@ void apply_protocol(Protocol protocol, SimParams* params) {
   p.protocol = protocol;
   switch (protocol) {
     case Protocol::kQuick:
-    case Protocol::kFast:
-      p.time_step_s = protocol == Protocol::kFast ? 1.0 / 480.0 : 1.0 / 960.0;
+      p.time_step_s = 1.0 / 960.0;
       p.lift_time_s = 0.5;
       p.lift_hold_s = 0.3;
       p.shake_time_s = 0.5;
       p.rock_frequency_hz = 2.0;  // one period in rock_time_s: tilts both ways
       p.rock_time_s = 0.5;
-      p.shake_all_axes_at_once = protocol == Protocol::kFast;  // one shake, one rock segment
+      p.shake_all_axes_at_once = false;
       p.gravity6_time_s = 0.5;
       p.reach_start_fraction = 0.8;
       p.reach_start_gap_m = 0.0;

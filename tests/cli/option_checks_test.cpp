@@ -35,15 +35,8 @@ TEST(CliOptionChecks, BadNumbersAndSeedsAreRefusedByNameWithoutOutput) {
       {"run --mu inf --out-dir " + dir.file("run"), "--mu: inf is not a finite number"},
       {"validate --plan " + plan + " --mu -1", "--mu: -1 is not a finite number"},
       {"validate --plan " + plan + " --mu nan", "--mu: nan is not a finite number"},
-      {"validate --plan " + plan + " --effort-scale -1", "--effort-scale: -1 is not"},
-      {"validate --plan " + plan + " --effort-scale 0", "--effort-scale: 0 is not"},
-      {"validate --plan " + plan + " --squeeze nan", "--squeeze: nan is not"},
-      {"validate --plan " + plan + " --concavity -1", "--concavity: -1 is not"},
-      {"validate --plan " + plan + " --hacd-triangles -5", "--hacd-triangles: -5 is not"},
-      {"validate --plan " + plan + " --solver-iterations 1000000000",
-       "--solver-iterations: 1000000000 is not a whole number in [1, 10000]"},
-      {"validate --plan " + plan + " --time-step 10", "--time-step: 10 is not"},
-      {"validate --plan " + plan + " --time-step 1e-12", "--time-step: 1e-12 is not"},
+      {"validate --plan " + plan + " --trial-turn 0.6", "--trial-turn: 0.6 is not"},
+      {"plan --validate --trial-turn 0.6", "--trial-turn: 0.6 is not"},  // one range
       {"validate --plan " + plan + " --seed 2.5", "--seed: 2.5 is not a whole number"},
       {"explore --object box.obj --seed -3 --json", "--seed: -3 is not"},
   };

@@ -39,7 +39,7 @@ TEST(CliPlan, CordPlanOnTheMugWritesEveryGraspField) {
   EXPECT_NE(r.output.find("wrote " + out), std::string::npos) << r.output;
   const nlohmann::json j = read_json(out);
   EXPECT_EQ(j["format"], "cordgrasp-plan");
-  EXPECT_EQ(j["format_version"], 2);
+  EXPECT_EQ(j["format_version"], 3);
   EXPECT_FALSE(j["cordgrasp_version"].get<std::string>().empty());
   EXPECT_EQ(j["inputs"]["hand"]["name"], "cordgrasp_sah");
   EXPECT_TRUE(std::filesystem::path(j["inputs"]["hand"]["path"].get<std::string>()).is_absolute());

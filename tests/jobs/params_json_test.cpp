@@ -274,8 +274,6 @@ TEST(EnumNames, EveryEnumParsesItsNamesAndListsThemWhenItCannot) {
   expect_names_round_trip(parse_object_shape,
                           {ObjectShape::kAuto, ObjectShape::kConvexHull,
                            ObjectShape::kDecomposition, ObjectShape::kGImpact});
-  expect_names_round_trip(parse_squeeze_direction,
-                          {SqueezeDirection::kActor, SqueezeDirection::kContactNormals});
   expect_names_round_trip(parse_world_frame, {WorldFrame::kApproachDown, WorldFrame::kObject});
 }
 

@@ -224,6 +224,40 @@ TEST(PlanJson, RefusesFormatVersion1WithAMessage) {
   std::filesystem::remove(path);
 }
 
+TEST(PlanJson, Version2PlansAreUpgradedInOneStep) {
+  // A format-2 plan as early version-2 writers left it: candidate filters in its parameters
+  // and stats, no object scale, preshape joints, approach α or measures.
+  const HandModel hand = load_hand("parallel_gripper");
+  const PlanDocument doc = sample_plan(hand);
+  const nlohmann::json current = plan_to_json(doc, hand);
+  EXPECT_EQ(current["format_version"], 3);
+  EXPECT_FALSE(current["parameters"].contains("candidate"));
+  nlohmann::json old = current;
+  old["format_version"] = 2;
+  old["parameters"]["candidate"] = {{"min_epsilon", 0.01}, {"min_fingers", 3},
+                                    {"max_com_offset", 0.0}, {"max_push_imbalance", 0.0},
+                                    {"approach_extra_m", 0.0}};
+  old["stats"]["filtered"] = 2;
+  old["inputs"]["object"].erase("scale");
+  for (auto* key : {"preshape_joints", "alpha_approach_rad", "measures"})
+    old["grasps"][0].erase(key);
+  const std::string path = temp_path("v2.json");
+  std::ofstream(path) << old.dump();
+  const nlohmann::json upgraded = read_plan_json(path);
+  EXPECT_EQ(upgraded["format_version"], 3);
+  EXPECT_FALSE(upgraded["parameters"].contains("candidate"));
+  EXPECT_FALSE(upgraded["stats"].contains("filtered"));
+  const PlanDocument back = plan_from_json(upgraded, hand, path);
+  EXPECT_EQ(back.object_scale, 1.0);
+  EXPECT_EQ(back.grasps[0].alpha_approach_rad, doc.grasps[0].alpha_rad);
+  EXPECT_EQ(back.grasps[0].q, doc.grasps[0].q);
+  // The current reader patches nothing: a format-3 plan without those keys is an error.
+  nlohmann::json bare = current;
+  bare["grasps"][0].erase("measures");
+  EXPECT_THROW(plan_from_json(bare, hand, "bare.json"), InputError);
+  std::filesystem::remove(path);
+}
+
 TEST(PlanJson, PosesReadBackBitForBit) {
   const HandModel hand = load_hand("parallel_gripper");
   PlanDocument doc = sample_plan(hand);
@@ -283,11 +317,12 @@ TEST(PlanJson, RefusesNonUnitQuaternionsFarPositionsNaNAndJointsOutsideLimits) {
   }, "outside the joint's limits");
 }
 
-TEST(PlanJson, APlanWithoutAnObjectScaleReadsAsScaleOneAndABadScaleIsRefused) {
+TEST(PlanJson, AMissingOrBadObjectScaleIsRefused) {
+  // (Version-2 plans without one read as scale 1: Version2PlansAreUpgradedInOneStep.)
   const HandModel hand = load_hand("parallel_gripper");
   nlohmann::json j = plan_to_json(sample_plan(hand), hand);
   j["inputs"]["object"].erase("scale");
-  EXPECT_EQ(plan_from_json(j, hand).object_scale, 1.0);
+  EXPECT_THROW(plan_from_json(j, hand), InputError);
   j["inputs"]["object"]["scale"] = -2.0;
   try {
     plan_from_json(j, hand, "/abs/plan.json");

@@ -149,10 +149,6 @@ BENCHMARK_CAPTURE(BM_ProtocolMug, schunk_sah_quick, "schunk_sah", Protocol::kQui
     ->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK_CAPTURE(BM_ProtocolMug, schunk_sah_thorough, "schunk_sah", Protocol::kThorough, 0.0)
     ->Unit(benchmark::kMillisecond)->Iterations(2);
-BENCHMARK_CAPTURE(BM_ProtocolMug, cordgrasp_sah_fast, "cordgrasp_sah", Protocol::kFast, 0.0)
-    ->Unit(benchmark::kMillisecond)->Iterations(3);
-BENCHMARK_CAPTURE(BM_ProtocolMug, schunk_sah_fast, "schunk_sah", Protocol::kFast, 0.0)
-    ->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK_CAPTURE(BM_ProtocolMug, cordgrasp_sah_standard, "cordgrasp_sah", Protocol::kStandard,
                   0.0)
     ->Unit(benchmark::kMillisecond)->Iterations(3);
@@ -160,9 +156,6 @@ BENCHMARK_CAPTURE(BM_ProtocolMug, schunk_sah_standard, "schunk_sah", Protocol::k
     ->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK_CAPTURE(BM_ProtocolMug, cordgrasp_sah_slippery_standard, "cordgrasp_sah",
                   Protocol::kStandard, kSlipperyMu)
-    ->Unit(benchmark::kMillisecond)->Iterations(3);
-BENCHMARK_CAPTURE(BM_ProtocolMug, cordgrasp_sah_slippery_fast, "cordgrasp_sah", Protocol::kFast,
-                  kSlipperyMu)
     ->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK_CAPTURE(BM_ProtocolMug, cordgrasp_sah_slippery_quick, "cordgrasp_sah",
                   Protocol::kQuick, kSlipperyMu)

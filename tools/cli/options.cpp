@@ -169,29 +169,6 @@ void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
   cmd->add_option("--sets", p.cord.sets, "Cord: valid sets to sample before local improvement")
       ->check(whole_number_in(1, 100000))
       ->capture_default_str();
-  cmd->add_option("--min-epsilon", p.plan.candidate.min_epsilon,
-                  "Reject force-closure grasps with a lower epsilon (0 = off)")
-      ->check(number_in(0.0, 10.0))
-      ->capture_default_str();
-  cmd->add_option("--min-fingers", p.plan.candidate.min_fingers,
-                  "Reject grasps with fewer fingers (actors) in contact (0 = off)")
-      ->check(whole_number_in(0, 100))
-      ->capture_default_str();
-  cmd->add_option("--max-com-offset", p.plan.candidate.max_com_offset,
-                  "Reject grasps whose contacts' mean is farther from the centre of mass than "
-                  "this fraction of the bounding radius (0 = off)")
-      ->check(number_in(0.0, 10.0))
-      ->capture_default_str();
-  cmd->add_option("--max-push-imbalance", p.plan.candidate.max_push_imbalance,
-                  "Reject grasps whose fingers, pressing equally, push the object with more "
-                  "than this fraction of one finger's force per finger (0 = off)")
-      ->check(number_in(0.0, 1.0))
-      ->capture_default_str();
-  cmd->add_option("--approach-extra", p.plan.candidate.approach_extra_m,
-                  "Cord: approach on past the surface hit by up to this much until the hand "
-                  "touches the object [m] (0 = off)")
-      ->check(number_in(0.0, 1.0))
-      ->capture_default_str();
   cmd->add_flag_callback(
       "--no-local-improvement", [&p]() { p.cord.local_improvement = false; },
       "Cord: skip the local improvement of the sampled sets");

@@ -6,6 +6,17 @@
 
 namespace cordgrasp::cli {
 
+void add_trial_nudge_options(CLI::App* cmd, PerturbationParams& p) {
+  cmd->add_option("--trial-offset", p.offset_m,
+                  "Hand offset of the nudged trials (all but the first) [m], random direction")
+      ->check(number_in(0.0, 0.1))
+      ->capture_default_str();
+  cmd->add_option("--trial-turn", p.turn_rad,
+                  "Hand turn of the nudged trials about the GCP [rad], random axis")
+      ->check(number_in(0.0, 0.5))
+      ->capture_default_str();
+}
+
 void add_validation_options(CLI::App* cmd, ValidationParams& v) {
   cmd->add_option("--trials", v.trials,
                   "Physics trials per candidate: as planned, then nudged by --trial-offset and "
@@ -42,14 +53,7 @@ void add_validation_options(CLI::App* cmd, ValidationParams& v) {
                   "...or hand orientations at least this far apart [deg]")
       ->check(number_in(0.0, 180.0))
       ->capture_default_str();
-  cmd->add_option("--trial-offset", v.perturbation.offset_m,
-                  "Hand offset of the nudged trials [m], random direction")
-      ->check(number_in(0.0, 0.1))
-      ->capture_default_str();
-  cmd->add_option("--trial-turn", v.perturbation.turn_rad,
-                  "Hand turn of the nudged trials about the GCP [rad], random axis")
-      ->check(number_in(0.0, 1.0))
-      ->capture_default_str();
+  add_trial_nudge_options(cmd, v.perturbation);
   cmd->add_option("--trial-seed", v.trial_seed, "Seed of the nudges' random directions")
       ->check(seed_value())
       ->capture_default_str();
@@ -59,7 +63,7 @@ const char* const kProtocolHelp =
     "Physics protocol (docs/physics.md §3): standard (the bounded close: the fingers start a "
     "few mm short of the planned contacts, close onto them and squeeze at most a millimetre "
     "past); quick (a squeeze spring 0.5 rad past the plan); thorough (quick's close, long "
-    "phases, no early exits); fast (quick at 1/480 s, all shake axes at once)";
+    "phases, no early exits)";
 
 void add_sim_override_options(CLI::App* cmd, SimOverrides& o, const std::string& recorded_note) {
   cmd->add_option("--mass", o.mass_kg, "Object mass [kg] (default: " + recorded_note +

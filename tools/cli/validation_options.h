@@ -11,6 +11,9 @@ namespace cordgrasp::cli {
 /// Help of every --protocol option: the presets and what sets them apart.
 extern const char* const kProtocolHelp;
 
+/// Adds --trial-offset [m] and --trial-turn [rad] (one range wherever they appear), bound to `p`.
+void add_trial_nudge_options(CLI::App* cmd, PerturbationParams& p);
+
 /// Adds --trials, --min-held, --require-held-as-planned, --budget, --squeeze-shift-limit,
 /// --min-gcp-distance, --min-gcp-distance-per-radius, --min-hand-turn, --trial-offset,
 /// --trial-turn and --trial-seed, bound to `v`.

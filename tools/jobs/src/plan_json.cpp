@@ -19,7 +19,7 @@ namespace cordgrasp {
 namespace {
 
 constexpr const char* kFormat = "cordgrasp-plan";
-constexpr int kFormatVersion = 2;
+constexpr int kFormatVersion = 3;
 
 /// Largest |coordinate| of a position in a plan [m]: anything farther is not a grasp.
 constexpr double kMaxPlanCoordinate_m = 1e3;
@@ -168,7 +168,6 @@ nlohmann::json stats_json(const PlanStats& s) {
           {"one_contact", s.one_contact},
           {"cannot_retreat", s.cannot_retreat},
           {"not_force_closure", s.not_force_closure},
-          {"filtered", s.filtered},
           {"setup_s", s.setup_s},
           {"exploration_s", s.exploration_s},
           {"finger_s", s.finger_s},
@@ -190,7 +189,6 @@ PlanStats stats_from_json(const nlohmann::json& j) {
   s.one_contact = j.value("one_contact", 0);
   s.cannot_retreat = j.value("cannot_retreat", 0);
   s.not_force_closure = j.value("not_force_closure", 0);
-  s.filtered = j.value("filtered", 0);
   s.setup_s = j.value("setup_s", 0.0);
   s.exploration_s = j.value("exploration_s", 0.0);
   s.finger_s = j.value("finger_s", 0.0);
@@ -286,6 +284,26 @@ void write_plan_file(const std::string& path, const PlanDocument& plan, const Ha
   write_file_atomically(path, plan_to_json(plan, hand).dump(2) + "\n");
 }
 
+void upgrade_plan_from_version_2(nlohmann::json* plan) {
+  nlohmann::json& j = *plan;
+  // Dropped in 3: the candidate filters (they only chose which grasps were planned).
+  if (j.contains("parameters") && j["parameters"].is_object()) j["parameters"].erase("candidate");
+  if (j.contains("stats") && j["stats"].is_object()) j["stats"].erase("filtered");
+  // Keys that version 2 plans written before them lack, as version 2 read them.
+  if (j.contains("inputs") && j["inputs"].is_object() && j["inputs"].contains("object") &&
+      j["inputs"]["object"].is_object() && !j["inputs"]["object"].contains("scale"))
+    j["inputs"]["object"]["scale"] = 1.0;
+  if (j.contains("grasps") && j["grasps"].is_array())
+    for (nlohmann::json& g : j["grasps"]) {
+      if (!g.is_object()) continue;
+      if (!g.contains("preshape_joints")) g["preshape_joints"] = nlohmann::json::object();
+      if (!g.contains("alpha_approach_rad") && g.contains("alpha_rad"))
+        g["alpha_approach_rad"] = g["alpha_rad"];
+      if (!g.contains("measures")) g["measures"] = params_to_json(CandidateMeasures{});
+    }
+  j["format_version"] = 3;
+}
+
 nlohmann::json read_plan_json(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError("read_plan: '" + path + "': cannot open file");
@@ -300,6 +318,7 @@ nlohmann::json read_plan_json(const std::string& path) {
   if (j.value("format_version", 0) == 1)
     throw InputError("read_plan: '" + path + "': format_version 1 (untyped parameters) is no "
                      "longer read; plan the object again");
+  if (j.value("format_version", 0) == 2) upgrade_plan_from_version_2(&j);
   if (j.value("format_version", 0) != kFormatVersion)
     throw InputError("read_plan: '" + path + "': unsupported format_version " +
                      j.value("format_version", nlohmann::json(nullptr)).dump());
@@ -327,19 +346,16 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
     p.object_path = in_obj.at("path").get<std::string>();
     p.object_name = in_obj.value("name", std::string());
     p.object_units = in_obj.value("units", std::string("m"));
-    // absent in plans written before --scale
-    if (in_obj.contains("scale") && !in_obj.at("scale").is_number())
-      throw InputError(source + ": inputs.object.scale: not a number");
-    p.object_scale = in_obj.value("scale", 1.0);
+    if (!in_obj.contains("scale") || !in_obj.at("scale").is_number())
+      throw InputError(source + ": inputs.object.scale: " +
+                       (in_obj.contains("scale") ? "not a number" : "missing"));
+    p.object_scale = in_obj.at("scale").get<double>();
     if (!(std::isfinite(p.object_scale) && p.object_scale > 0.0))
       throw InputError(source + ": inputs.object.scale: " + format_number(p.object_scale) +
                        " is not finite and > 0");
     p.object_triangles = in_obj.value("triangles", 0);
     if (!j.contains("parameters")) throw InputError(source + ": parameters: missing");
-    nlohmann::json parameters_json = j.at("parameters");
-    if (parameters_json.is_object() && !parameters_json.contains("candidate"))
-      parameters_json["candidate"] = params_to_json(CandidateParams{});  // older plans: none
-    JsonReadArchive parameters(parameters_json, source, "parameters");
+    JsonReadArchive parameters(j.at("parameters"), source, "parameters");
     PlanParameters{&p}.Serialize(&parameters);
     parameters.reject_unknown_keys();
     if (p.planner != "cord" && p.planner != "generic")
@@ -373,9 +389,8 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
       grasp.X_OB = pose_from_json(member(g, "hand_pose", where), where + ".hand_pose");
       grasp.X_OG = pose_from_json(member(g, "gcp_pose", where), where + ".gcp_pose");
       grasp.q = joints_from_json(hand, member(g, "joints", where), where + ".joints");
-      grasp.q_preshape =
-          joints_from_json(hand, g.value("preshape_joints", nlohmann::json::object()),
-                           where + ".preshape_joints");
+      grasp.q_preshape = joints_from_json(hand, member(g, "preshape_joints", where),
+                                          where + ".preshape_joints");
       const nlohmann::json& contacts = array_member(g, "contacts", where);
       for (size_t k = 0; k < contacts.size(); ++k) {
         const nlohmann::json& c = contacts[k];
@@ -393,13 +408,10 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
       grasp.force_closure = optional_bool(g, "force_closure", false, where);
       grasp.epsilon = optional_number(g, "epsilon", 0.0, where);
       grasp.alpha_rad = optional_number(g, "alpha_rad", 0.0, where);
-      // Plans written before the palm normal existed hold one α, of the GCP z axis.
-      grasp.alpha_approach_rad =
-          optional_number(g, "alpha_approach_rad", grasp.alpha_rad, where);
-      if (g.contains("measures"))  // plans written before the measures existed have none
-        params_from_json(g.at("measures"), source,
-                         "grasps[" + std::to_string(p.grasps.size()) + "].measures",
-                         &grasp.measures);
+      grasp.alpha_approach_rad = optional_number(g, "alpha_approach_rad", 0.0, where);
+      params_from_json(member(g, "measures", where), source,
+                       "grasps[" + std::to_string(p.grasps.size()) + "].measures",
+                       &grasp.measures);
       if (g.contains("chi_m2") && !g["chi_m2"].is_null())
         grasp.chi_m2 = finite_number(g["chi_m2"], where + ".chi_m2");
       if (g.contains("region_rank") && !g["region_rank"].is_null()) {

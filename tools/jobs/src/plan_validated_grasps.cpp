@@ -46,7 +46,6 @@ void add_stats(PlanStats& total, const PlanStats& s) {
   total.one_contact += s.one_contact;
   total.cannot_retreat += s.cannot_retreat;
   total.not_force_closure += s.not_force_closure;
-  total.filtered += s.filtered;
   total.setup_s += s.setup_s;
   total.finger_s += s.finger_s;
   total.quality_s += s.quality_s;

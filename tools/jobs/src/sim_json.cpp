@@ -26,46 +26,6 @@ constexpr int kFormatVersion = 2;
 
 nlohmann::json sim_params_to_json(const SimParams& p) { return params_to_json(p); }
 
-namespace {
-
-/// Overlays `patch` onto `*base`: objects key by key (recursively), every other value, null
-/// included (an unset optional), replaces the base's (unlike JSON merge patch, where null
-/// deletes).
-void overlay_json(const nlohmann::json& patch, nlohmann::json* base) {
-  if (!patch.is_object() || !base->is_object()) {
-    *base = patch;
-    return;
-  }
-  for (const auto& item : patch.items()) overlay_json(item.value(), &(*base)[item.key()]);
-}
-
-}  // namespace
-
-void merge_physics_file(const std::string& path, SimParams* params) {
-  std::ifstream in(path);
-  if (!in) throw InputError("physics settings '" + path + "': cannot be read");
-  nlohmann::json file;
-  try {
-    file = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError("physics settings '" + path + "': not JSON: " + e.what());
-  }
-  if (!file.is_object()) throw InputError("physics settings '" + path + "': expected an object");
-  nlohmann::json patch = file;
-  if (file.contains("format") && file.contains("parameters")) {
-    // A sim.json: its parameters block, less the keys that are no SimParams field.
-    const nlohmann::json fields = sim_params_to_json(*params);
-    patch = nlohmann::json::object();
-    for (const auto& item : file.at("parameters").items())
-      if (fields.contains(item.key())) patch[item.key()] = item.value();
-  }
-  nlohmann::json merged = sim_params_to_json(*params);
-  overlay_json(patch, &merged);
-  SimParams out;
-  params_from_json(merged, "physics settings '" + path + "'", "", &out);
-  *params = out;
-}
-
 nlohmann::json sim_result_to_json(const SimResult& r, const HandModel& hand) {
   nlohmann::json phases = nlohmann::json::array();
   for (const PhaseResult& p : r.phases) {

@@ -9,6 +9,7 @@
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/jobs/hand_scene.h"
+#include "cordgrasp/jobs/physics_settings.h"
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/render_options.h"
@@ -26,7 +27,28 @@ std::string canonical(const std::string& path) {
   return ec ? path : p.string();
 }
 
+SimParams physics_for_plan(const ValidateJobParams& opt, const PlanDocument& plan) {
+  SimParams params = sim_params_for(opt.protocol);
+  // μ: one value shared with the planner: the plan's unless --mu overrides it.
+  params.contact = plan_contact_model(plan);
+  if (opt.mu) params.contact.mu = *opt.mu;
+  apply_sim_overrides(
+      sim_overrides_or(opt.physics, plan.validation ? plan.validation->params.physics
+                                                    : SimOverrides{}),
+      &params);
+  params.decomposition_cache_dir = opt.cache_dir;
+  if (!opt.physics_file.empty()) merge_physics_file(opt.physics_file, &params);
+  return params;
+}
+
 }  // namespace
+
+SimParams validate_job_physics(const ValidateJobParams& opt) {
+  const nlohmann::json plan_json = read_plan_json(opt.plan);
+  const HandModel hand =
+      load_hand(opt.hand.empty() ? plan_hand_path(plan_json) : opt.hand, opt.hand_load);
+  return physics_for_plan(opt, plan_from_json(plan_json, hand, opt.plan));
+}
 
 SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallbacks& cb) {
   // Output folders are checked before minutes of simulation, not after.
@@ -39,6 +61,7 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   const std::string hand_path = opt.hand.empty() ? plan_hand_path(plan_json) : opt.hand;
   const HandModel hand = load_hand(hand_path, opt.hand_load);
   const PlanDocument plan = plan_from_json(plan_json, hand, opt.plan);  // throws for another hand
+  SimParams params = physics_for_plan(opt, plan);  // settings errors before the mesh is read
 
   // Object: the plan's, or the one given (which must be the plan's geometry).
   MeshLoadOptions mesh_opt;
@@ -61,41 +84,6 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
     }
   }
 
-  SimParams params = sim_params_for(opt.protocol);  // the options below override it
-  // μ: one value shared with the planner: the plan's unless --mu overrides it.
-  params.contact = plan_contact_model(plan);
-  if (opt.mu) params.contact.mu = *opt.mu;
-  apply_sim_overrides(
-      sim_overrides_or(opt.physics, plan.validation ? plan.validation->params.physics
-                                                    : SimOverrides{}),
-      &params);
-  if (!opt.physics_file.empty()) merge_physics_file(opt.physics_file, &params);
-  params.object_shape = parse_object_shape(opt.object_shape);
-  params.decomposition_cache_dir = opt.cache_dir;
-  if (opt.time_step_s) params.time_step_s = *opt.time_step_s;
-  if (opt.solver_iterations) params.solver_iterations = *opt.solver_iterations;
-  if (opt.contact_stiffness_Npm) params.contact_stiffness_Npm = *opt.contact_stiffness_Npm;
-  if (opt.contact_damping_Nspm) params.contact_damping_Nspm = *opt.contact_damping_Nspm;
-  if (opt.lift_hold_s) params.lift_hold_s = *opt.lift_hold_s;
-  if (opt.shake_time_s) params.shake_time_s = *opt.shake_time_s;
-  if (opt.rock_time_s) params.rock_time_s = *opt.rock_time_s;
-  if (opt.rock_frequency_hz) params.rock_frequency_hz = *opt.rock_frequency_hz;
-  if (opt.rest_exit_time_s) params.rest_exit_time_s = *opt.rest_exit_time_s;
-  if (!opt.shake_axes.empty()) {
-    if (opt.shake_axes != "sequential" && opt.shake_axes != "together")
-      throw InputError("validate: --shake-axes '" + opt.shake_axes +
-                       "': expected sequential or together");
-    params.shake_all_axes_at_once = opt.shake_axes == "together";
-  }
-  if (opt.squeeze_rad) params.squeeze_rad = *opt.squeeze_rad;
-  if (!opt.squeeze_direction.empty())
-    params.squeeze_direction = parse_squeeze_direction(opt.squeeze_direction);
-  if (!opt.object_fixed.empty()) params.object_fixed = parse_object_fixed(opt.object_fixed);
-  if (opt.effort_scale) params.effort_scale = *opt.effort_scale;
-  if (opt.concavity) params.decomposition.concavity = *opt.concavity;
-  if (opt.hacd_triangles) params.decomposition.max_input_triangles = *opt.hacd_triangles;
-  if (opt.hull_vertices) params.decomposition.max_hull_vertices = *opt.hull_vertices;
-  if (opt.warmstart) params.articulated_warmstarting = true;
   const SimTests tests = sim_tests_from_string(opt.tests);
 
   // --snapshots: the world at the end of every phase (not of shake / gravity6 segments).
@@ -110,7 +98,7 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   // --trace: the object in the hand every trace_interval_s and at every phase end, as CSV.
   std::ostringstream trace;
   if (!opt.trace_path.empty()) {
-    params.trace_interval_s = opt.trace_interval_s;
+    if (!(params.trace_interval_s > 0.0)) params.trace_interval_s = kDefaultTraceInterval_s;
     trace << "grasp,phase,phase_end,sim_time_s,object_shift_m,object_turn_rad,contacts\n";
   }
   std::vector<std::string> trace_rows(plan.grasps.size());

@@ -9,27 +9,6 @@
 
 namespace cordgrasp {
 
-/// Planner-side choices that make force-closure candidates more likely to hold in physics
-/// (docs/finger-stage-and-quality.md, "Candidate filters"). A force-closure grasp that fails a
-/// filter is rejected like a grasp that is not force closure (PlanStats::filtered). 0 = off.
-struct CandidateParams {
-  double min_epsilon = 0.0;       ///< reject ε below this (textbook ε, docs/algorithm.md §8)
-  int min_fingers = 0;            ///< reject fewer actors in contact
-  double max_com_offset = 0.0;    ///< reject CandidateMeasures::com_offset above this
-  double max_push_imbalance = 0.0;  ///< reject CandidateMeasures::push_imbalance above this
-  /// Cord planner: the approach goes on past the surface hit of docs/algorithm.md §7.2 by up to
-  /// this much, until the hand touches the object (the palm comes nearer) [m].
-  double approach_extra_m = 0.0;
-
-  /// Visits every field in declaration order (core/serialize.h).
-  template <typename Archive>
-  void Serialize(Archive* a) {
-    visit_fields(a, CORDGRASP_NVP(min_epsilon), CORDGRASP_NVP(min_fingers),
-                 CORDGRASP_NVP(max_com_offset), CORDGRASP_NVP(max_push_imbalance),
-                 CORDGRASP_NVP(approach_extra_m));
-  }
-};
-
 /// Parameters shared by the cord and the generic planner.
 struct PlanParams {
   int grasps = 1;              ///< stop after this many force-closure grasps
@@ -43,14 +22,13 @@ struct PlanParams {
   /// The stopping rule: at most this many finger-stage attempts (both planners), so a seed
   /// gives the same plan on any machine. The cord planner also stops when its regions run out.
   int max_attempts = 500;
-  CandidateParams candidate;   ///< filters of force-closure candidates
 
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
   void Serialize(Archive* a) {
     visit_fields(a, CORDGRASP_NVP(grasps), CORDGRASP_NVP(time_limit_s), CORDGRASP_NVP(seed),
                  CORDGRASP_NVP(finger), CORDGRASP_NVP(quality), CORDGRASP_NVP(roll_retry),
-                 CORDGRASP_NVP(max_attempts), CORDGRASP_NVP(candidate));
+                 CORDGRASP_NVP(max_attempts));
   }
 };
 
@@ -64,7 +42,6 @@ struct PlanStats {
   int one_contact = 0;         ///< attempts ending with fewer than min_contacts contacts
   int cannot_retreat = 0;      ///< attempts where the hand could not get collision-free
   int not_force_closure = 0;   ///< attempts with contacts but no force closure
-  int filtered = 0;            ///< force-closure grasps rejected by PlanParams::candidate
   double setup_s = 0.0;        ///< hand setup and object wrench-space preparation
   double exploration_s = 0.0;  ///< cord exploration
   double finger_s = 0.0;       ///< all finger-stage runs

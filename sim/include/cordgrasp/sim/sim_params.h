@@ -23,50 +23,6 @@ const char* to_string(ObjectShape shape);
 /// Parses the names of to_string(ObjectShape). @throws std::invalid_argument otherwise.
 ObjectShape parse_object_shape(const std::string& text);
 
-/// Old name of parse_object_shape.
-inline ObjectShape object_shape_from_string(const std::string& text) {
-  return parse_object_shape(text);
-}
-
-/// Which way the squeeze pushes once the fingers have reached the plan (docs/physics.md §3).
-enum class SqueezeDirection {
-  /// Every actor joint pushes toward closing with its full effort limit.
-  kActor,
-  /// The planned contacts are pressed along their normals by one force f: τ = f·Σ Jᵀ(−n).
-  kContactNormals,
-  /// The planned contacts are pressed by forces whose sum and moment vanish
-  /// (balanced_contact_forces), scaled up to the first joint's effort limit: the object is not
-  /// pushed away from its planned pose. kActor where they leave a friction cone.
-  kBalanced,
-};
-
-/// "actor", "contacts", "balanced".
-const char* to_string(SqueezeDirection direction);
-
-/// Parses the names of to_string(SqueezeDirection). @throws std::invalid_argument otherwise.
-SqueezeDirection parse_squeeze_direction(const std::string& text);
-
-/// Old name of parse_squeeze_direction.
-inline SqueezeDirection squeeze_direction_from_string(const std::string& text) {
-  return parse_squeeze_direction(text);
-}
-
-/// How long the object is held in place (as if by a support) while the hand closes.
-enum class ObjectFixed {
-  /// Never: the fingers may push the object while they reach and squeeze.
-  kNever,
-  /// During the reach; let go when the squeeze starts, so that it seats the object.
-  kReach,
-  /// During the reach and the squeeze; let go when the lift starts.
-  kClose,
-};
-
-/// "never", "reach", "close".
-const char* to_string(ObjectFixed fixed);
-
-/// Parses the names of to_string(ObjectFixed). @throws std::invalid_argument otherwise.
-ObjectFixed parse_object_fixed(const std::string& text);
-
 /// Where the world frame W is put relative to the object frame O (gravity is always −z_W).
 enum class WorldFrame {
   /// W rotated so that the GCP approach axis +z_G points down (−z_W): lift against gravity.
@@ -84,10 +40,6 @@ enum class Protocol {
   /// The long protocol (lift 1 s + hold 1 s, 1 s per shake and rock axis), no early exits,
   /// the reach from the preshape: the protocol before the quick one, verdict for verdict.
   kThorough,
-  /// Quick's phases at 1/480 s with one shake and one rock segment along all axes at once:
-  /// ~3x cheaper than quick, but a harsher test that holds fewer grasps than thorough
-  /// (docs/physics.md §6).
-  kFast,
   /// The default: the bounded close (the fingers start a few millimetres short of the planned
   /// contacts, close onto them and squeeze at most squeeze_travel_m past them with the
   /// weight-sized force, until the object and the joints rest), quick's lift and early exits,
@@ -95,7 +47,7 @@ enum class Protocol {
   kStandard,
 };
 
-/// "quick", "thorough", "fast", "standard".
+/// "quick", "thorough", "standard".
 const char* to_string(Protocol protocol);
 
 /// Parses the names of to_string(Protocol). @throws std::invalid_argument otherwise.
@@ -181,10 +133,6 @@ struct SimParams {
   /// every joint with a planned contact still presses it with this × m·g / μ (its lever:
   /// contact_levers); never up. 0: the effort limits alone [-].
   double squeeze_weight_factor = 30.0;
-  /// Squeeze direction; along the contact normals held about as many grasps as kActor.
-  SqueezeDirection squeeze_direction = SqueezeDirection::kActor;
-  /// close: how long the object is held in place while the hand closes.
-  ObjectFixed object_fixed = ObjectFixed::kNever;
   /// Squeeze as the spring above (true) or with full effort up to the rest point (false).
   bool compliant_squeeze = true;
   /// Bounded squeeze (> 0): each actor joint with a planned contact is driven to this far past
@@ -304,8 +252,6 @@ struct SimParams {
     a->Visit(CORDGRASP_NVP(default_effort_Nm));
     a->Visit(CORDGRASP_NVP(default_effort_N));
     visit_fields(a, CORDGRASP_NVP(effort_scale), CORDGRASP_NVP(squeeze_weight_factor),
-                 CORDGRASP_NVP(squeeze_direction),
-                 CORDGRASP_NVP(object_fixed),
                  CORDGRASP_NVP(compliant_squeeze), CORDGRASP_NVP(squeeze_travel_m),
                  CORDGRASP_NVP(squeeze_hold_factor),
                  CORDGRASP_NVP(servo_gain_per_s),
@@ -365,5 +311,10 @@ void apply_protocol(Protocol protocol, SimParams* params);
 
 /// Default SimParams with `protocol`'s preset applied.
 SimParams sim_params_for(Protocol protocol);
+
+/// Checks that every number of `params` is finite, within its range where the simulation
+/// needs one (time step, iterations, μ, ...) and otherwise not negative.
+/// @throws std::invalid_argument naming the first field out of range and its range.
+void check_sim_params(const SimParams& params);
 
 }  // namespace cordgrasp

@@ -77,7 +77,7 @@ class GraspSimulation {
   PhaseResult settle();
   /// Close: reach — all driven joints follow minimum-jerk paths from the reach start to the plan,
   /// arriving together; squeeze — actor joints are driven past the plan (in the actors'
-  /// closing directions, or so as to press the planned contacts: squeeze_direction) until they
+  /// closing directions) until they
   /// stall or squeeze_max_time_s, the others hold the plan. Sets the
   /// reference pose of the object in the hand. No contact at the end = kDropped.
   PhaseResult close();

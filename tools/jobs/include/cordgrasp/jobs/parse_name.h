@@ -26,10 +26,6 @@ inline void parse_name(const std::string& text, XorBackend* e) { *e = parse_xor_
 inline void parse_name(const std::string& text, QualityMode* e) { *e = parse_quality_mode(text); }
 inline void parse_name(const std::string& text, LengthUnits* e) { *e = parse_length_units(text); }
 inline void parse_name(const std::string& text, ObjectShape* e) { *e = parse_object_shape(text); }
-inline void parse_name(const std::string& text, SqueezeDirection* e) {
-  *e = parse_squeeze_direction(text);
-}
-inline void parse_name(const std::string& text, ObjectFixed* e) { *e = parse_object_fixed(text); }
 inline void parse_name(const std::string& text, WorldFrame* e) { *e = parse_world_frame(text); }
 inline void parse_name(const std::string& text, Protocol* e) { *e = parse_protocol(text); }
 inline void parse_name(const std::string& text, Outcome* e) { *e = parse_outcome(text); }

@@ -71,9 +71,16 @@ nlohmann::json plan_to_json(const PlanDocument& plan, const HandModel& hand);
 /// Writes plan_to_json() to `path` atomically (temp file + rename). @throws InputError.
 void write_plan_file(const std::string& path, const PlanDocument& plan, const HandModel& hand);
 
-/// Parses plan.json text from `path`. @throws InputError naming the file (missing, not JSON,
-/// not a cordgrasp plan, unsupported format_version: version 1 files are refused).
+/// Parses plan.json text from `path`, format 2 upgraded to the current 3
+/// (upgrade_plan_from_version_2). @throws InputError naming the file (missing, not JSON, not a
+/// cordgrasp plan, unsupported format_version: version 1 files are refused).
 nlohmann::json read_plan_json(const std::string& path);
+
+/// The one upgrade step of plan.json format 2 to 3: drops the candidate filters
+/// (parameters.candidate, stats.filtered; they only chose which grasps were planned) and adds
+/// what early version-2 plans lack, as version 2 read it (inputs.object.scale 1, the grasps'
+/// preshape_joints {}, alpha_approach_rad = alpha_rad, default measures).
+void upgrade_plan_from_version_2(nlohmann::json* plan);
 
 /// Hand description path recorded in a plan (to load the hand before plan_from_json).
 std::string plan_hand_path(const nlohmann::json& plan);

@@ -41,14 +41,6 @@ namespace cordgrasp {
 /// Every SimParams field as JSON (units in the names), nested structs as objects.
 nlohmann::json sim_params_to_json(const SimParams& params);
 
-/// Physics settings file: a JSON object with any subset of sim_params_to_json()'s keys
-/// (nested objects partially too), or a sim.json whose "parameters" block holds them. Its
-/// values replace those of `*params`; keys that are no SimParams field are ignored in a
-/// sim.json's block (tests, trials, ...) and an error in a settings file.
-/// @throws InputError naming the file and the key for an unreadable file, an unknown key or a
-/// value of the wrong type.
-void merge_physics_file(const std::string& path, SimParams* params);
-
 /// One SimResult as JSON (joint names from `hand`).
 nlohmann::json sim_result_to_json(const SimResult& result, const HandModel& hand);
 

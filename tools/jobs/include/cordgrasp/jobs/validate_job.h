@@ -29,38 +29,17 @@ struct ValidateJobParams {
   /// Mass, density, squeeze weight; unset: those the plan was validated with (its
   /// validation.parameters.physics, sim_overrides_or), else SimParams'.
   SimOverrides physics;
-  /// Physics settings file merged over the preset (merge_physics_file); the options below
-  /// override it. Empty: none.
+  /// Physics settings file merged over the preset and the above (merge_physics_file): every
+  /// other SimParams field is set there. Empty: none.
   std::string physics_file;
-  std::string object_shape = "auto";
-  std::string cache_dir;
-  std::optional<double> time_step_s;
-  std::optional<int> solver_iterations;
-  std::optional<double> contact_stiffness_Npm;
-  std::optional<double> contact_damping_Nspm;
-  // Protocol fields overriding the preset (SimParams of the same names).
-  std::optional<double> lift_hold_s;
-  std::optional<double> shake_time_s;
-  std::optional<double> rock_time_s;
-  std::optional<double> rock_frequency_hz;
-  std::optional<double> rest_exit_time_s;
-  std::string shake_axes;  ///< "sequential", "together" (shake_all_axes_at_once); "": preset
-  std::optional<double> concavity;
-  std::optional<double> squeeze_rad;
-  std::string squeeze_direction;
-  std::string object_fixed;  ///< "never", "reach", "close" (SimParams::object_fixed); "": default
-  std::optional<double> effort_scale;
-  std::optional<int> hacd_triangles;
-  std::optional<int> hull_vertices;
-  bool warmstart = false;
+  std::string cache_dir;  ///< SimParams::decomposition_cache_dir, unless the file sets it
   int grasps = -1;
   int trials = 1;
   int jobs = 1;  ///< threads (one physics world each); results do not depend on it
   PerturbationParams perturbation;
   std::uint64_t seed = 1;
   std::string snapshots_dir;
-  std::string trace_path;
-  double trace_interval_s = 0.01;
+  std::string trace_path;  ///< every SimParams::trace_interval_s (0: kDefaultTraceInterval_s)
   std::string out;
   /// Stop request: no new grasp or trial starts once it is set (those in flight finish); the
   /// grasps whose every trial finished are written, sim.json marked incomplete.
@@ -73,6 +52,15 @@ struct ValidateJobCallbacks {
   std::function<void(const std::string&)> grasp_line;
   std::function<void(const std::string& stage, int done, int total)> progress;
 };
+
+/// Trace interval of --trace when the settings set none [s].
+constexpr double kDefaultTraceInterval_s = 0.01;
+
+/// The physics settings validate_job(p) simulates with: p.protocol's preset, the plan's μ and
+/// soft-finger radius (or p.mu), the mass, density and squeeze weight (p.physics, else the
+/// plan's validation record), the cache folder, then p.physics_file.
+/// @throws InputError naming the file for an unreadable plan or settings file.
+SimParams validate_job_physics(const ValidateJobParams& p);
 
 /// Validates the plan p.plan as the options say and writes sim.json to p.out (and the trace
 /// and snapshots when asked). Output folders are checked before any simulation. When
