@@ -42,7 +42,7 @@ struct BoxPlan {
     mesh = load_job_mesh(job, object);
   }
   PlanDocument plan() const {
-    return plan_validated_grasps(job, v, SimParams{}, mesh, object, hand);
+    return plan_validated_grasps(job, v, mesh, object, hand);
   }
 };
 
@@ -172,6 +172,40 @@ TEST(PlanValidatedGrasps, ValidatingThePlanAgainTestsTheObjectItWasAcceptedWith)
   std::filesystem::remove_all(dir);
 }
 
+TEST(PlanValidatedGrasps, ItsPhysicsSettingsFileIsRecordedAndUsedAgainByValidate) {
+  constexpr int kIterations = 30;     // not the default 50
+  constexpr double kLift_m = 0.05;    // not the default 10 cm
+  const std::string dir = temp_dir("physics_file");
+  const std::string file = dir + "/physics.yaml";
+  std::ofstream(file) << "solver_iterations: " << kIterations << "\nlift_height_m: " << kLift_m
+                      << "\n";
+  BoxPlan box(1);
+  box.v.physics_file = file;
+  const PlanDocument plan = box.plan();
+  ASSERT_EQ(plan.grasps.size(), 1u);
+  EXPECT_EQ(plan.validation->params.physics_file, file);
+  const std::string plan_path = dir + "/plan.json";
+  write_plan_file(plan_path, plan, box.hand);
+  const auto r = test::run_cordgrasp("validate --plan '" + plan_path + "' --tests lift --out '" +
+                                     dir + "/sim.json'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream in(dir + "/sim.json");
+  const nlohmann::json sim = nlohmann::json::parse(in);
+  EXPECT_EQ(sim.at("parameters").at("solver_iterations"), kIterations);
+  EXPECT_DOUBLE_EQ(sim.at("parameters").at("lift_height_m").get<double>(), kLift_m);
+  EXPECT_EQ(sim.at("grasps").at(0).at("outcome"), "held");  // as it was accepted
+  // A bad file stops validated planning before any simulation, naming the file and field.
+  std::ofstream(file) << "solver_iterations: 0\n";
+  try {
+    box.plan();
+    FAIL() << "a solver_iterations of 0 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("physics.yaml': solver_iterations"), std::string::npos)
+        << e.what();
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(GraspsDiffer, ByGcpDistanceOrHandTurn) {
   ValidationParams v;  // 1 cm or a quarter of the radius, 20°
   constexpr double kSmallObjectRadius_m = 0.02;  // a quarter is 5 mm: 1 cm counts
@@ -197,7 +231,7 @@ TEST(GraspsDiffer, ByGcpDistanceOrHandTurn) {
 TEST(PlanValidatedGrasps, ACancelledPlanStopsBeforeItsNextCandidateAndSaysSo) {
   const BoxPlan box(2);
   std::atomic<int> signal{SIGINT};  // asked to stop before it began
-  const PlanDocument plan = plan_validated_grasps(box.job, box.v, SimParams{}, box.mesh,
+  const PlanDocument plan = plan_validated_grasps(box.job, box.v, box.mesh,
                                                   box.object, box.hand, 1, {},
                                                   CancelToken(&signal));
   EXPECT_EQ(plan.interrupted, "SIGINT");
@@ -207,7 +241,7 @@ TEST(PlanValidatedGrasps, ACancelledPlanStopsBeforeItsNextCandidateAndSaysSo) {
   EXPECT_FALSE(plan.validation->stats.budget_spent);
   // Not cancelled: the same plan runs to its end.
   signal = 0;
-  const PlanDocument whole = plan_validated_grasps(box.job, box.v, SimParams{}, box.mesh,
+  const PlanDocument whole = plan_validated_grasps(box.job, box.v, box.mesh,
                                                    box.object, box.hand, 1, {},
                                                    CancelToken(&signal));
   EXPECT_EQ(whole.interrupted, "");

@@ -88,7 +88,7 @@ void run_plan(const PlanOptions& opt) {
   const HandModel hand = load_hand(opt.hand, opt.hand_load);
   PlanDocument doc;
   if (opt.validate) {
-    doc = plan_validated_grasps(opt.job, opt.validation, SimParams{}, mesh, object_path, hand, opt.jobs,
+    doc = plan_validated_grasps(opt.job, opt.validation, mesh, object_path, hand, opt.jobs,
                                 [](const std::string& line) {
                                   std::cerr << "plan: " << line << '\n';
                                 },

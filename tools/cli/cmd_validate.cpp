@@ -46,10 +46,7 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--mu", opt->job.mu, "Friction coefficient (default: the plan's μ)")
       ->check(number_in(0.0, 10.0));
   add_sim_override_options(cmd, opt->job.physics, "the plan's validation record's, else ");
-  cmd->add_option("--physics", opt->job.physics_file,
-                  "Physics settings (JSON, or YAML named *.yaml) merged over the protocol: any "
-                  "SimParams fields, or a sim.json whose parameters to repeat (docs/physics.md "
-                  "§5a)");
+  cmd->add_option("--physics", opt->job.physics_file, kPhysicsHelp);
   cmd->add_flag("--print-physics", opt->print_physics,
                 "Print the settings this command would simulate with (YAML, a --physics file) "
                 "and exit");

@@ -17,7 +17,12 @@ void add_trial_nudge_options(CLI::App* cmd, PerturbationParams& p) {
       ->capture_default_str();
 }
 
+const char* const kPhysicsHelp =
+    "Physics settings (JSON, or YAML named *.yaml) merged over the protocol: any SimParams "
+    "fields, or a sim.json whose parameters to repeat (docs/physics.md §5a)";
+
 void add_validation_options(CLI::App* cmd, ValidationParams& v) {
+  cmd->add_option("--physics", v.physics_file, kPhysicsHelp);
   cmd->add_option("--trials", v.trials,
                   "Physics trials per candidate: as planned, then nudged by --trial-offset and "
                   "--trial-turn")

@@ -11,10 +11,13 @@ namespace cordgrasp::cli {
 /// Help of every --protocol option: the presets and what sets them apart.
 extern const char* const kProtocolHelp;
 
+/// Help of every --physics option: a settings file over the protocol.
+extern const char* const kPhysicsHelp;
+
 /// Adds --trial-offset [m] and --trial-turn [rad] (one range wherever they appear), bound to `p`.
 void add_trial_nudge_options(CLI::App* cmd, PerturbationParams& p);
 
-/// Adds --trials, --min-held, --require-held-as-planned, --budget, --squeeze-shift-limit,
+/// Adds --physics (the settings file), --trials, --min-held, --require-held-as-planned, --budget, --squeeze-shift-limit,
 /// --min-gcp-distance, --min-gcp-distance-per-radius, --min-hand-turn, --trial-offset,
 /// --trial-turn and --trial-seed, bound to `v`.
 void add_validation_options(CLI::App* cmd, ValidationParams& v);

@@ -7,6 +7,7 @@
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/assets.h"
 #include "cordgrasp/jobs/hand_scene.h"
+#include "cordgrasp/jobs/physics_settings.h"
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/validate_plan.h"
 #include "cordgrasp/render/png_io.h"
@@ -23,8 +24,8 @@ int main(int argc, char** argv) {
   const PlanDocument plan = plan_job(planner, *mesh, object_path, hand);
   if (plan.grasps.empty()) return std::printf("no force-closure grasp\n"), 1;
 
-  SimParams physics;
-  physics.contact = plan_contact_model(plan);  // the friction the plan was made with
+  // The default protocol with the friction the plan was made with.
+  const SimParams physics = physics_settings(plan_contact_model(plan), PhysicsChoice{});
   const SimDocument sim = validate_plan(plan, hand, *mesh, physics, sim_tests_from_string("lift"));
   for (size_t k = 0; k < sim.results.size(); ++k)
     std::printf("grasp %zu: epsilon %.4f, %s\n", k, plan.grasps[k].epsilon,

@@ -17,6 +17,7 @@
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
+#include "cordgrasp/jobs/physics_settings.h"
 #include "cordgrasp/jobs/plan_validated_grasps.h"
 #include "cordgrasp/jobs/sim_json.h"
 #include "cordgrasp/jobs/text_format.h"
@@ -517,15 +518,18 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
     PlanJobParams job = params.job;
     job.planner = attempt.planner;
     job.plan.seed = attempt.seed;
-    SimParams sim = sim_params_for(params.protocol);
-    sim.decomposition_cache_dir = params.sim_cache_dir;
+    PhysicsChoice physics;
+    physics.protocol = params.protocol;
+    physics.cache_dir = params.sim_cache_dir;
+    physics.file = params.physics_file;
     PlanDocument plan;
     if (params.validation) {
       ValidationParams v = *params.validation;
       v.tests = params.tests == "none" ? std::string("lift,shake") : params.tests;
       v.protocol = params.protocol;
-      plan = plan_validated_grasps(job, v, sim, *mesh, attempt.object_path, *hand, 1, {},
-                                   cancel);
+      v.physics_file = params.physics_file;
+      plan = plan_validated_grasps(job, v, *mesh, attempt.object_path, *hand, 1, {}, cancel,
+                                   params.sim_cache_dir);
       const ValidationStats& vs = plan.validation->stats;
       row.validated_accepted = vs.accepted;
       row.validated_candidates = vs.force_closure;
@@ -562,7 +566,7 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
     row.region_rank = g.region_rank;
     result.first_grasp = g;
     if (params.tests == "none") return result;
-    sim.contact = plan_contact_model(plan);  // one friction model for planner and physics
+    SimParams sim = physics_settings(plan_contact_model(plan), physics);
     if (params.validation) sim.squeeze_shift_limit_m = params.validation->squeeze_shift_limit_m;
     const SimDocument doc = validate_plan(plan, *hand, *mesh, sim,
                                           sim_tests_from_string(params.tests), 1, {}, {}, 1,

@@ -120,6 +120,7 @@ BenchRunOutcome run_bench(const BenchRunParams& opt, const BenchRunCallbacks& cb
   params.tests = opt.tests;
   params.protocol = opt.protocol;
   params.sim_cache_dir = opt.cache_dir;
+  params.physics_file = opt.validation.physics_file;  // --physics, validated or not
   if (opt.validate) params.validation = opt.validation;
   params.hand_load = opt.hand_load;
   if (params.tests != "none") (void)sim_tests_from_string(params.tests);  // fail early

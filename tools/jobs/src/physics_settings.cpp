@@ -129,6 +129,16 @@ void merge_physics_file(const std::string& path, SimParams* params) {
   *params = out;
 }
 
+SimParams physics_settings(const ContactModel& plan_contact, const PhysicsChoice& choice) {
+  SimParams params = sim_params_for(choice.protocol);
+  params.contact = plan_contact;  // one friction model for planner and physics
+  if (choice.mu) params.contact.mu = *choice.mu;
+  apply_sim_overrides(sim_overrides_or(choice.overrides, choice.recorded), &params);
+  params.decomposition_cache_dir = choice.cache_dir;
+  if (!choice.file.empty()) merge_physics_file(choice.file, &params);
+  return params;
+}
+
 std::string physics_settings_yaml(const SimParams& params) {
   YAML::Emitter out;
   write_yaml(sim_params_to_json(params), &out);

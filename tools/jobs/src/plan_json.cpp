@@ -293,6 +293,9 @@ void upgrade_plan_from_version_2(nlohmann::json* plan) {
   if (j.contains("inputs") && j["inputs"].is_object() && j["inputs"].contains("object") &&
       j["inputs"]["object"].is_object() && !j["inputs"]["object"].contains("scale"))
     j["inputs"]["object"]["scale"] = 1.0;
+  if (j.contains("validation") && j["validation"].is_object() &&
+      j["validation"].contains("parameters") && j["validation"]["parameters"].is_object())
+    j["validation"]["parameters"]["physics_file"] = "";  // new in 3
   if (j.contains("grasps") && j["grasps"].is_array())
     for (nlohmann::json& g : j["grasps"]) {
       if (!g.is_object()) continue;

@@ -16,6 +16,7 @@
 #include "cordgrasp/core/palm_width.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/plan_generic_grasps.h"
+#include "cordgrasp/jobs/physics_settings.h"
 #include "cordgrasp/jobs/text_format.h"
 #include "cordgrasp/jobs/validate_plan.h"
 #include "cordgrasp/sim/validate_grasp.h"
@@ -154,10 +155,10 @@ bool grasps_differ(const Grasp& a, const Grasp& b, const ValidationParams& p,
 }
 
 PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationParams& v,
-                                   const SimParams& sim_in, const Mesh& mesh,
-                                   const std::string& object_path, const HandModel& hand,
-                                   int jobs, const ValidatedPlanProgress& progress,
-                                   const CancelToken& cancel) {
+                                   const Mesh& mesh, const std::string& object_path,
+                                   const HandModel& hand, int jobs,
+                                   const ValidatedPlanProgress& progress,
+                                   const CancelToken& cancel, const std::string& cache_dir) {
   if (v.trials < 1 || v.trials > 1000)
     throw std::invalid_argument("plan_validated_grasps: trials must be in [1, 1000], got " +
                                 std::to_string(v.trials));
@@ -175,10 +176,12 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
   record.params = v;
   ValidationStats& vs = record.stats;
   const SimTests tests = sim_tests_from_string(v.tests);
-  SimParams sim = sim_in;
-  apply_protocol(v.protocol, &sim);
-  apply_sim_overrides(v.physics, &sim);
-  sim.contact = plan_contact_model(doc);
+  PhysicsChoice physics;
+  physics.protocol = v.protocol;
+  physics.overrides = v.physics;
+  physics.cache_dir = cache_dir;
+  physics.file = v.physics_file;
+  SimParams sim = physics_settings(plan_contact_model(doc), physics);
   sim.squeeze_shift_limit_m = v.squeeze_shift_limit_m;
 
   const int wanted = std::max(1, doc.params.grasps);

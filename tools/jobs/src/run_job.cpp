@@ -13,6 +13,7 @@
 #include "cordgrasp/core/object_meshes.h"
 #include "cordgrasp/jobs/hand_scene.h"
 #include "cordgrasp/jobs/plan_json.h"
+#include "cordgrasp/jobs/physics_settings.h"
 #include "cordgrasp/jobs/plan_validated_grasps.h"
 #include "cordgrasp/jobs/text_format.h"
 #include "cordgrasp/jobs/validate_plan.h"
@@ -56,8 +57,6 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
 
   // 1. Plan (validated: only grasps that hold in physics).
   const bool validated = physics && opt.validate;
-  SimParams base = sim_params_for(opt.protocol);
-  apply_sim_overrides(opt.validation.physics, &base);
   ValidationParams validation = opt.validation;
   validation.tests = opt.tests;
   validation.protocol = opt.protocol;
@@ -70,7 +69,7 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   auto t = Clock::now();
   RunReport& report = out.report;
   if (validated)
-    report.plan = plan_validated_grasps(opt.job, validation, base, *mesh, object_path, hand,
+    report.plan = plan_validated_grasps(opt.job, validation, *mesh, object_path, hand,
                                         opt.jobs, progress, opt.cancel);
   else
     report.plan = plan_job(opt.job, *mesh, object_path, hand, opt.cancel);
@@ -120,8 +119,11 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   SimDocument& sim = out.sim;
   std::vector<std::vector<SnapshotFrame>> frames(static_cast<size_t>(n));
   if (physics) {
-    SimParams params = base;
-    params.contact = plan_contact_model(written);  // one friction model for planner and physics
+    PhysicsChoice choice;
+    choice.protocol = opt.protocol;
+    choice.overrides = opt.validation.physics;
+    choice.file = opt.validation.physics_file;
+    SimParams params = physics_settings(plan_contact_model(written), choice);
     if (validated) params.squeeze_shift_limit_m = validation.squeeze_shift_limit_m;
     t = Clock::now();
     const auto hooks = [&](int k) -> PhaseHook {

@@ -28,17 +28,17 @@ std::string canonical(const std::string& path) {
 }
 
 SimParams physics_for_plan(const ValidateJobParams& opt, const PlanDocument& plan) {
-  SimParams params = sim_params_for(opt.protocol);
-  // μ: one value shared with the planner: the plan's unless --mu overrides it.
-  params.contact = plan_contact_model(plan);
-  if (opt.mu) params.contact.mu = *opt.mu;
-  apply_sim_overrides(
-      sim_overrides_or(opt.physics, plan.validation ? plan.validation->params.physics
-                                                    : SimOverrides{}),
-      &params);
-  params.decomposition_cache_dir = opt.cache_dir;
-  if (!opt.physics_file.empty()) merge_physics_file(opt.physics_file, &params);
-  return params;
+  PhysicsChoice choice;
+  choice.protocol = opt.protocol;
+  choice.mu = opt.mu;
+  choice.overrides = opt.physics;
+  if (plan.validation) choice.recorded = plan.validation->params.physics;
+  choice.cache_dir = opt.cache_dir;
+  // The settings file given, else the one a validated plan was accepted with.
+  choice.file = !opt.physics_file.empty() || !plan.validation
+                    ? opt.physics_file
+                    : plan.validation->params.physics_file;
+  return physics_settings(plan_contact_model(plan), choice);
 }
 
 }  // namespace

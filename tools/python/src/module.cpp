@@ -23,6 +23,7 @@
 #include "cordgrasp/jobs/hand_scene.h"
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/plan_json.h"
+#include "cordgrasp/jobs/physics_settings.h"
 #include "cordgrasp/jobs/plan_validated_grasps.h"
 #include "cordgrasp/jobs/render_options.h"
 #include "cordgrasp/jobs/sim_json.h"
@@ -317,8 +318,7 @@ void bind_plan(py::module_& m) {
         ValidationParams v;
         set_from_kwargs(&v, validation);
         return run_plan(mesh, hand, [&](const std::string& path) {
-          return plan_validated_grasps(params, v, SimParams{}, *mesh.mesh, path, *hand.hand,
-                                       jobs);
+          return plan_validated_grasps(params, v, *mesh.mesh, path, *hand.hand, jobs);
         });
       },
       py::arg("mesh"), py::arg("hand"), py::arg("validation") = py::dict(), py::arg("jobs") = 1,
@@ -334,15 +334,16 @@ void bind_validate(py::module_& m) {
       "validate",
       [](PyPlan& plan, const std::string& protocol, const std::string& tests, int trials,
          int max_grasps, int jobs, std::uint64_t seed, std::optional<double> mass_kg,
-         std::optional<double> density_kgm3, std::optional<double> squeeze_weight_factor) {
-        SimParams params;
-        apply_protocol(parse_protocol(protocol), &params);
-        params.contact = plan_contact_model(plan.doc);
-        const SimOverrides given{mass_kg, density_kgm3, squeeze_weight_factor};
-        apply_sim_overrides(
-            sim_overrides_or(given, plan.doc.validation ? plan.doc.validation->params.physics
-                                                        : SimOverrides{}),
-            &params);
+         std::optional<double> density_kgm3, std::optional<double> squeeze_weight_factor,
+         const std::string& physics) {
+        PhysicsChoice choice;
+        choice.protocol = parse_protocol(protocol);
+        choice.overrides = SimOverrides{mass_kg, density_kgm3, squeeze_weight_factor};
+        if (plan.doc.validation) choice.recorded = plan.doc.validation->params.physics;
+        choice.file = !physics.empty() || !plan.doc.validation
+                          ? physics
+                          : plan.doc.validation->params.physics_file;
+        const SimParams params = physics_settings(plan_contact_model(plan.doc), choice);
         const SimTests sim_tests = sim_tests_from_string(tests);
         const Mesh& mesh = plan_mesh(plan);
         SimDocument doc;
@@ -359,10 +360,11 @@ void bind_validate(py::module_& m) {
       py::arg("plan"), py::arg("protocol") = std::string(to_string(SimParams{}.protocol)), py::arg("tests") = "lift,shake,gravity6",
       py::arg("trials") = 1, py::arg("max_grasps") = -1, py::arg("jobs") = 1,
       py::arg("seed") = 1, py::arg("mass_kg") = py::none(), py::arg("density_kgm3") = py::none(),
-      py::arg("squeeze_weight_factor") = py::none(),
+      py::arg("squeeze_weight_factor") = py::none(), py::arg("physics") = std::string(),
       "Checks the plan's grasps in Bullet; returns the sim.json content as a dict. mass_kg, "
       "density_kgm3, squeeze_weight_factor: as `validate --mass/--density/--squeeze-weight`; "
-      "None: those a validated plan was accepted with, else the defaults.");
+      "None: those a validated plan was accepted with, else the defaults. physics: a settings "
+      "file (YAML or JSON) over the protocol, as `validate --physics`.");
 }
 
 // ---- pictures ----------------------------------------------------------------------------

@@ -37,6 +37,7 @@ struct BenchParams {
   std::string tests = "lift,shake";   ///< physics tests on each attempt's first grasp; "none"
   Protocol protocol = SimParams{}.protocol;  ///< physics protocol preset
   std::string sim_cache_dir;          ///< on-disk convex decomposition cache ("" = memory only)
+  std::string physics_file;           ///< physics settings file over the protocol ("" = none)
   /// Set: each attempt plans with plan_validated_grasps (its tests and protocol: from above)
   /// and fills the validated_* columns.
   std::optional<ValidationParams> validation;

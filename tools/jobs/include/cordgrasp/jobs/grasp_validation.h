@@ -42,6 +42,9 @@ struct ValidationParams {
   /// Object mass and grip of every trial over the SimParams given (CLI --mass, --density,
   /// --squeeze-weight); `validate --plan` takes them from here unless told otherwise.
   SimOverrides physics;
+  /// Physics settings file of every trial, merged last (physics_settings); `validate --plan`
+  /// uses it too unless given another. Empty: none.
+  std::string physics_file;
 
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
@@ -51,7 +54,8 @@ struct ValidationParams {
                  CORDGRASP_NVP(budget_s),
                  CORDGRASP_NVP(squeeze_shift_limit_m), CORDGRASP_NVP(min_gcp_distance_m),
                  CORDGRASP_NVP(min_gcp_distance_per_radius), CORDGRASP_NVP(min_hand_turn_deg), CORDGRASP_NVP(perturbation),
-                 CORDGRASP_NVP(trial_seed), CORDGRASP_NVP(physics));
+                 CORDGRASP_NVP(trial_seed), CORDGRASP_NVP(physics),
+                 CORDGRASP_NVP(physics_file));
   }
 };
 

@@ -79,7 +79,8 @@ nlohmann::json read_plan_json(const std::string& path);
 /// The one upgrade step of plan.json format 2 to 3: drops the candidate filters
 /// (parameters.candidate, stats.filtered; they only chose which grasps were planned) and adds
 /// what early version-2 plans lack, as version 2 read it (inputs.object.scale 1, the grasps'
-/// preshape_joints {}, alpha_approach_rad = alpha_rad, default measures).
+/// preshape_joints {}, alpha_approach_rad = alpha_rad, default measures; no validation
+/// physics_file).
 void upgrade_plan_from_version_2(nlohmann::json* plan);
 
 /// Hand description path recorded in a plan (to load the hand before plan_from_json).

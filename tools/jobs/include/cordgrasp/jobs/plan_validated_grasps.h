@@ -26,18 +26,19 @@ using ValidatedPlanProgress = std::function<void(const std::string&)>;
 /// (with require_held_as_planned, only if the first, as planned, is one of them: else the
 /// candidate is dropped after its first trial),
 /// until enough are accepted or budget_s is spent (checked before each candidate).
-/// `sim` gives the physics (its protocol preset and contact model are replaced by v.protocol
-/// and the plan's, then v.physics's set fields replace its own). The document holds only accepted
+/// The physics: physics_settings() of v.protocol, the plan's contact model, v.physics and
+/// v.physics_file (decompositions cached in `cache_dir`). The document holds only accepted
 /// grasps, with doc.validation filled. Deterministic for given seeds (timings aside) unless
 /// the budget stops it. `cancel` is checked before each candidate, in the planner and
 /// between trial batches: the candidate in flight is abandoned (not accepted), the document
 /// holds the grasps accepted before and doc.interrupted names the signal.
 /// @throws std::invalid_argument for bad settings (trials, min_held).
 PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationParams& v,
-                                   const SimParams& sim, const Mesh& mesh,
-                                   const std::string& object_path, const HandModel& hand,
-                                   int jobs = 1, const ValidatedPlanProgress& progress = {},
-                                   const CancelToken& cancel = {});
+                                   const Mesh& mesh, const std::string& object_path,
+                                   const HandModel& hand, int jobs = 1,
+                                   const ValidatedPlanProgress& progress = {},
+                                   const CancelToken& cancel = {},
+                                   const std::string& cache_dir = "");
 
 /// "accepted 3 / 3 (12 candidates: 2 similar, 10 simulated, 4 rejected early; first after
 /// 2.1 s, 14.3 s in all)".

@@ -56,9 +56,10 @@ struct ValidateJobCallbacks {
 /// Trace interval of --trace when the settings set none [s].
 constexpr double kDefaultTraceInterval_s = 0.01;
 
-/// The physics settings validate_job(p) simulates with: p.protocol's preset, the plan's μ and
-/// soft-finger radius (or p.mu), the mass, density and squeeze weight (p.physics, else the
-/// plan's validation record), the cache folder, then p.physics_file.
+/// The physics settings validate_job(p) simulates with (physics_settings): p.protocol's
+/// preset, the plan's μ and soft-finger radius (or p.mu), the mass, density and squeeze weight
+/// (p.physics, else the plan's validation record), the cache folder, then p.physics_file
+/// (else the validated plan's settings file).
 /// @throws InputError naming the file for an unreadable plan or settings file.
 SimParams validate_job_physics(const ValidateJobParams& p);
 
