@@ -20,12 +20,16 @@ int main(int argc, char** argv) {
   CLI::App app{"cordgrasp-mujoco-check: protocol standard (bounded close, lift, shake) in "
                "MuJoCo on a scene written by `cordgrasp export --format mjcf` (a second "
                "opinion, not the validation)"};
-  std::string scene, csv;
+  std::string scene, csv, trace_csv;
   StandardCheckParams p;
   app.add_option("--scene", scene, "MJCF scene from `cordgrasp export`")->required();
   app.add_option("--out", csv,
                  "CSV: grasp,held,outcome,failed_phase,shift_m,turn_rad,close_shift_m,"
                  "close_turn_rad,squeeze_s");
+  app.add_option("--trace", trace_csv,
+                 "CSV: grasp,phase,sim_time_s,object_shift_m,object_turn_rad,contacts");
+  app.add_option("--trace-interval", p.trace_interval_s, "Trace row interval [s]; 0: 0.01 s")
+      ->capture_default_str();
   app.add_option("--time-step", p.time_step_s, "MuJoCo time step [s]; 0: the scene's")
       ->capture_default_str();
   app.add_option("--mu", p.mu, "Friction of every geom; 0: the scene's (the plan's)")
@@ -67,6 +71,13 @@ int main(int argc, char** argv) {
       out << "grasp,held,outcome,failed_phase,shift_m,turn_rad,close_shift_m,close_turn_rad,"
              "squeeze_s\n";
     }
+    std::ofstream trace;
+    if (!trace_csv.empty()) {
+      trace.open(trace_csv);
+      if (!trace) throw std::runtime_error("cannot write '" + trace_csv + "'");
+      trace << "grasp,phase,sim_time_s,object_shift_m,object_turn_rad,contacts\n";
+      if (!(p.trace_interval_s > 0.0)) p.trace_interval_s = 0.01;
+    }
     int held = 0;
     for (int k = 0; k < m->nkey; ++k) {
       mj_copyModel(run_model.get(), m.get());
@@ -82,6 +93,10 @@ int main(int argc, char** argv) {
         out << k << ',' << (r.held ? 1 : 0) << ',' << r.outcome << ',' << r.failed_phase << ','
             << r.shift_m << ',' << r.turn_rad << ',' << r.close_shift_m << ','
             << r.close_turn_rad << ',' << r.squeeze_s << '\n';
+      for (const auto& t : r.trace)
+        if (trace)
+          trace << k << ',' << t.phase << ',' << t.sim_time_s << ',' << t.object_shift_m << ','
+                << t.object_turn_rad << ',' << t.contacts << '\n';
     }
     std::printf("mujoco-check: %d/%d held\n", held, static_cast<int>(m->nkey));
   } catch (const std::exception& e) {

@@ -158,8 +158,12 @@ class StandardRun {
 
   StandardCheckResult run() {
     StandardCheckResult r;
+    result_ = &r;
+    if (p_.trace_interval_s > 0.0)
+      trace_every_ = std::max(1, static_cast<int>(std::lround(p_.trace_interval_s / dt_)));
     // Settle, then close: reach (minimum jerk to the plan, effort capped), bounded squeeze.
     run_for(p_.settle_time_s, current_target());
+    phase_ = "close";
     close(r);
     r.close_shift_m = pose_change(X_BO_plan_, &r.close_turn_rad);
     if (!verdict(r, "close", X_BO_plan_, true)) return r;
@@ -167,6 +171,7 @@ class StandardRun {
     closed_ = true;
 
     // Lift: gravity along −z_W with the hand compensated, rise lift_height_m, hold.
+    phase_ = "lift";
     set_gravity(-p_.gravity_mps2 * R_OW_.col(2));
     const Pose bottom = current_target();
     const auto rise = [&](double t) {
@@ -178,6 +183,7 @@ class StandardRun {
     if (!verdict(r, "lift", X_BO_ref_, true)) return r;
 
     // Shake along x_W, y_W, z_W at once, then rock about them through the GCP.
+    phase_ = "shake";
     const Pose top = current_target();
     const double f = std::max(p_.shake_frequency_hz, 1.0 / p_.shake_time_s);
     const bool shook = run_for(p_.shake_time_s, [&](double t) {
@@ -186,6 +192,7 @@ class StandardRun {
       return X;
     });
     if (!verdict(r, "shake", X_BO_ref_, shook)) return r;
+    phase_ = "rock";
     const Pose still = current_target();
     const Eigen::Vector3d pivot = still.p + still.q * p_RG_;
     const double f_rock = std::max(p_.rock_frequency_hz, 1.0 / p_.rock_time_s);
@@ -248,6 +255,14 @@ class StandardRun {
       d_->ctrl[a] = target_[a] + (kp_[a] > 0.0 ? kd_[a] * feedforward_[a] / kp_[a] : 0.0);
     mj_step(m_, d_);
     if (unstable()) blew_up_ = true;
+    if (trace_every_ > 0 && ++steps_ % trace_every_ == 0) {
+      TraceSample t;
+      t.phase = phase_;
+      t.sim_time_s = d_->time;
+      t.object_shift_m = pose_change(closed_ ? X_BO_ref_ : X_BO_plan_, &t.object_turn_rad);
+      t.contacts = contact_count();
+      result_->trace.push_back(t);
+    }
   }
 
   bool unstable() const {
@@ -390,6 +405,9 @@ class StandardRun {
   Eigen::Isometry3d X_BO_plan_, X_BO_ref_;
   std::vector<double> kp_, kd_;  ///< servo gains [N·m/rad, N·m·s/rad or N/m, N·s/m]
   std::vector<double> plan_, squeeze_, effort_, hold_, target_, feedforward_;
+  StandardCheckResult* result_ = nullptr;
+  std::string phase_ = "settle";
+  int trace_every_ = 0, steps_ = 0;
   bool squeezing_ = false, closed_ = false, blew_up_ = false;
 };
 

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace cordgrasp::mujoco_check {
 
@@ -49,11 +50,21 @@ struct StandardCheckParams {
   double held_rotation_rad = 15.0 * M_PI / 180.0;  ///< ...turned less than this...
   double contact_distance_m = 1e-3;  ///< ...and a hand–object contact this close remains
   double unstable_speed_mps = 10.0;  ///< object or hand base faster: unstable
+  double trace_interval_s = 0.0;     ///< > 0: a TraceSample this often [s]
   double mu = 0.0;                   ///< > 0: friction μ of every geom instead of the scene's
   /// MuJoCo only: contact time constant of every geom (solref[0]; 0: the scene's, MuJoCo's
   /// 0.02 s); stiffer contacts than the default come closer to Bullet's rigid ones [s].
   double contact_time_constant_s = 0.004;
   bool implicit = true;              ///< MuJoCo only: the implicit integrator (servo damping)
+};
+
+/// The object in the hand at one moment (a trace row, as `cordgrasp validate --trace`).
+struct TraceSample {
+  std::string phase;           ///< settle, close, lift, shake, rock
+  double sim_time_s = 0.0;
+  double object_shift_m = 0.0;   ///< against the planned pose (settle, close), else after close
+  double object_turn_rad = 0.0;
+  int contacts = 0;              ///< hand–object contacts
 };
 
 /// One grasp's run.
@@ -67,6 +78,7 @@ struct StandardCheckResult {
   double shift_m = 0.0;          ///< after close: in the hand at the end of the last phase run
   double turn_rad = 0.0;
   double squeeze_s = 0.0;        ///< duration of the squeeze stage [s]
+  std::vector<TraceSample> trace;  ///< every StandardCheckParams::trace_interval_s
 };
 
 /// Runs protocol standard on keyframe (grasp) `key` of `m` (a private copy: gains, damping,
