@@ -87,6 +87,10 @@ class StandardRun {
     if (p.contact_time_constant_s > 0.0)
       for (int g = 0; g < m->ngeom; ++g) m->geom_solref[mjNREF * g] = p.contact_time_constant_s;
     m->opt.noslip_iterations = p.noslip_iterations;
+    // Contacts within contact_distance_m are reported (as Bullet's manifold points within
+    // two margins) but push only once the geoms touch: margin = gap, half on each geom.
+    for (int g = 0; g < m->ngeom; ++g)
+      m->geom_margin[g] = m->geom_gap[g] = 0.5 * p.contact_distance_m;
     if (p.mu > 0.0)
       for (int g = 0; g < m->ngeom; ++g) m->geom_friction[3 * g] = p.mu;
 
