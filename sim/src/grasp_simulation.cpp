@@ -216,6 +216,19 @@ struct GraspSimulation::Impl {
     if (!(plan_lever[j] > 0.0)) return 0.0;
     return prismatic ? 1.0 : plan_lever[j];
   }
+  /// Reach speed cap of every joint: actor joints close_speed × their speed (at most the
+  /// URDF's velocity limit), the others hold_speed (prismatic 0.1×) [rad/s or m/s].
+  Eigen::VectorXd close_speed_caps() const;
+  /// Duration of the reach from q0 to the plan: the slowest driven joint at its cap [s].
+  double reach_time(const Eigen::VectorXd& q0, const Eigen::VectorXd& close_cap) const;
+  /// Squeeze effort of the close (squeeze_efforts()); in the bounded close 0 for joints
+  /// without a planned contact (they hold the plan).
+  Eigen::VectorXd close_push() const;
+  /// Bounded squeeze target of joint j pushing with `push`: squeeze_travel_m past the plan at
+  /// its lever.
+  double bounded_squeeze_target(int j, double push) const {
+    return grasp.q[j] + std::copysign(params.squeeze_travel_m / squeeze_lever(j), push);
+  }
   /// Smallest hand–object distance reported by Bullet's narrow phase for the current poses
   /// (+inf when no pair is within its contact threshold) [m].
   double hand_object_distance();
@@ -668,6 +681,71 @@ Eigen::VectorXd GraspSimulation::Impl::scaled_to_weight(Eigen::VectorXd push) co
   return push;
 }
 
+Eigen::VectorXd GraspSimulation::Impl::close_speed_caps() const {
+  const int n = static_cast<int>(hand.joints.size());
+  Eigen::VectorXd close_cap = Eigen::VectorXd::Constant(n, params.hold_speed);
+  for (int j = 0; j < n; ++j)
+    if (hand.joints[static_cast<size_t>(j)].type == JointType::kPrismatic)
+      close_cap[j] = 0.1 * params.hold_speed;
+  for (size_t a = 0; a < actor_joints.size(); ++a) {
+    const int j = actor_joints[a];
+    double cap = params.close_speed * actor_speed[a];
+    const double limit = hand.joints[static_cast<size_t>(j)].velocity_limit;
+    if (limit > 0.0) cap = std::min(cap, limit);
+    close_cap[j] = cap;
+  }
+  return close_cap;
+}
+
+double GraspSimulation::Impl::reach_time(const Eigen::VectorXd& q0,
+                                         const Eigen::VectorXd& close_cap) const {
+  double reach_s = dt;
+  for (size_t j = 0; j < hand.joints.size(); ++j) {
+    const Eigen::Index i = static_cast<Eigen::Index>(j);
+    if (hand.joints[j].is_moving() && !hand.joints[j].mimic)
+      reach_s = std::max(reach_s, kMinJerkPeakSpeed * std::abs(grasp.q[i] - q0[i]) / close_cap[i]);
+  }
+  return reach_s;
+}
+
+Eigen::VectorXd GraspSimulation::Impl::close_push() const {
+  Eigen::VectorXd push = squeeze_efforts();
+  if (bounded())
+    for (const int j : actor_joints)
+      if (!(squeeze_lever(j) > 0.0)) push[j] = 0.0;  // no planned contact: holds the plan
+  return push;
+}
+
+BoundedClose bounded_close(const Mesh& mesh, const HandModel& hand, const Grasp& grasp,
+                           const SimParams& params) {
+  if (!(params.squeeze_travel_m > 0.0) || !(params.reach_start_gap_m > 0.0))
+    throw std::invalid_argument(
+        "bounded_close: squeeze_travel_m and reach_start_gap_m must be positive");
+  GraspSimulation::Impl s(mesh, hand, grasp, params);
+  const Eigen::Index n = static_cast<Eigen::Index>(hand.joints.size());
+  BoundedClose out;
+  out.q_start = s.q_start;
+  out.q_plan = s.grasp.q;
+  out.q_squeeze = s.grasp.q;
+  out.effort = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index j = 0; j < n; ++j)
+    out.effort[j] = s.hand_body->effort_limit[static_cast<size_t>(j)];
+  out.hold_effort = out.effort;
+  out.push_sign = Eigen::VectorXd::Zero(n);
+  const Eigen::VectorXd push = s.close_push();
+  for (const int j : s.actor_joints) {
+    if (push[j] == 0.0) continue;  // holds the plan with its effort limit
+    const double limit = out.effort[j];
+    out.effort[j] = std::min(limit, std::abs(push[j]));
+    out.hold_effort[j] = std::min(limit, params.squeeze_hold_factor * std::abs(push[j]));
+    out.push_sign[j] = push[j] > 0.0 ? 1.0 : -1.0;
+    out.q_squeeze[j] = s.bounded_squeeze_target(j, push[j]);
+  }
+  out.reach_time_s = s.reach_time(s.q_start, s.close_speed_caps());
+  out.object = s.object->info;
+  return out;
+}
+
 PhaseResult GraspSimulation::close() {
   Impl& s = *impl_;
   PhaseResult r;
@@ -676,32 +754,15 @@ PhaseResult GraspSimulation::close() {
   // Reach: every driven joint follows a minimum-jerk path from where it is to the plan, all
   // arriving together, so the fingers meet the object at once at the planned contacts.
   const Eigen::VectorXd q0 = bullet::hand_joint_positions(*s.hand_body, n);
-  Eigen::VectorXd close_cap = Eigen::VectorXd::Constant(n, s.params.hold_speed);
-  for (int j = 0; j < n; ++j)
-    if (s.hand.joints[static_cast<size_t>(j)].type == JointType::kPrismatic)
-      close_cap[j] = 0.1 * s.params.hold_speed;
-  for (size_t a = 0; a < s.actor_joints.size(); ++a) {
-    const int j = s.actor_joints[a];
-    double cap = s.params.close_speed * s.actor_speed[a];
-    const double limit = s.hand.joints[static_cast<size_t>(j)].velocity_limit;
-    if (limit > 0.0) cap = std::min(cap, limit);
-    close_cap[j] = cap;
-  }
-  double reach_s = s.dt;
-  for (int j = 0; j < n; ++j)
-    if (s.hand.joints[static_cast<size_t>(j)].is_moving() && !s.hand.joints[static_cast<size_t>(j)].mimic)
-      reach_s = std::max(reach_s, kMinJerkPeakSpeed * std::abs(s.grasp.q[j] - q0[j]) / close_cap[j]);
+  const Eigen::VectorXd close_cap = s.close_speed_caps();
+  const double reach_s = s.reach_time(q0, close_cap);
   // Tracking needs headroom over the path's peak speed.
   s.speed_cap = 2.0 * close_cap;
   // Bounded close: the fingers push with their squeeze effort already while they reach, so
   // one that meets the object early presses it no harder than the squeeze will.
-  Eigen::VectorXd push = s.squeeze_efforts();
-  if (s.bounded()) {
-    for (const int j : s.actor_joints) {
-      if (!(s.squeeze_lever(j) > 0.0)) push[j] = 0.0;  // no planned contact: holds the plan
-      s.effort_cap[j] = std::abs(push[j]);
-    }
-  }
+  const Eigen::VectorXd push = s.close_push();
+  if (s.bounded())
+    for (const int j : s.actor_joints) s.effort_cap[j] = std::abs(push[j]);
   const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
   const int reach_steps = static_cast<int>(std::ceil(reach_s / s.dt));
   for (int k = 1; k <= reach_steps && !s.blew_up; ++k) {
@@ -724,8 +785,7 @@ PhaseResult GraspSimulation::close() {
     if (s.bounded()) {
       // Bounded: squeeze_travel_m past the planned contacts at this joint's lever, pushing
       // with the capped effort all the way (no spring whose force fades near its rest point).
-      const double lever = s.squeeze_lever(j);
-      s.q_target[j] = s.grasp.q[j] + std::copysign(s.params.squeeze_travel_m / lever, push[j]);
+      s.q_target[j] = s.bounded_squeeze_target(j, push[j]);
       s.hold_sign[j] = push[j] > 0.0 ? 1.0 : -1.0;
       continue;
     }

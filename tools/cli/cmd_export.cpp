@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "cordgrasp/jobs/export_job.h"
 #include "options.h"
+#include "validation_options.h"
 
 namespace cordgrasp::cli {
 
@@ -27,6 +28,8 @@ void add_export_command(CLI::App& app) {
       ->check(whole_number_in(0, 100000));
   cmd->add_option("--cache-dir", opt->cache_dir,
                   "mjcf: directory caching the object's convex decomposition (by mesh hash)");
+  // mjcf: the object's weight and grip of the exported bounded close, as `validate` takes them.
+  add_sim_override_options(cmd, opt->physics, "the plan's validation record's, else ");
   add_package_path_option(cmd, opt->hand_load);
   cmd->callback([opt]() {
     const ExportOutcome out = export_job(*opt);

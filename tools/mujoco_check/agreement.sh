@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Bullet (`cordgrasp validate --tests lift`) against MuJoCo (cordgrasp-mujoco-check) on the same
-# grasps: plans GRASPS grasps per object of the shipped objects and ../shared/data/objects for
-# each hand, exports each plan as MJCF, runs both lift tests and prints per hand the grasps,
-# held in each and how many verdicts agree. Files go to OUT_DIR.
+# Bullet (`cordgrasp validate --tests lift,shake`, protocol standard) against MuJoCo
+# (cordgrasp-mujoco-check, the same protocol) on the same grasps: plans GRASPS grasps per object
+# of the shipped objects and ../shared/data/objects for each hand, exports each plan as MJCF,
+# runs both and prints per hand the grasps, held in each and how many verdicts agree. Files go
+# to OUT_DIR.
 #   tools/mujoco_check/agreement.sh OUT_DIR GRASPS HAND...
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -19,7 +20,7 @@ for hand in "$@"; do
     base="$OUT/$hand/$name"
     "$CG" plan --hand "$hand" --object "$obj" --units auto -n "$GRASPS" --time-limit 10 \
       --out "$base.plan.json" >/dev/null 2>&1 || continue
-    "$CG" validate --plan "$base.plan.json" --tests lift --out "$base.sim.json" -q \
+    "$CG" validate --plan "$base.plan.json" --tests lift,shake --out "$base.sim.json" -q \
       >/dev/null 2>&1 || continue
     "$CG" export --plan "$base.plan.json" --format mjcf --out "$base.xml" >/dev/null 2>&1 ||
       continue

@@ -16,6 +16,7 @@
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/sim/convex_decomposition.h"
+#include "cordgrasp/sim/validate_grasp.h"
 
 namespace cordgrasp {
 
@@ -65,19 +66,37 @@ ExportOutcome export_job(const ExportJobParams& p) {
 
   MeshLoadOptions mesh_opt;
   mesh_opt.units = parse_length_units(plan.object_units);
+  mesh_opt.scale = plan.object_scale;
   const Mesh object = load_mesh(plan.object_path, mesh_opt);
   if (p.format == ExportFormat::kMjcf) {
-    const auto parts = cached_convex_decomposition(object, DecompositionParams{}, p.cache_dir);
+    // The bounded close of every grasp as `cordgrasp validate` (protocol standard) runs it.
+    SimParams sim = sim_params_for(Protocol::kStandard);
+    sim.contact = plan_contact_model(plan);
+    apply_sim_overrides(sim_overrides_or(p.physics, plan.validation
+                                                        ? plan.validation->params.physics
+                                                        : SimOverrides{}),
+                        &sim);
+    sim.decomposition_cache_dir = p.cache_dir;
+    std::vector<BoundedClose> closes;
+    for (const Grasp& g : grasps) closes.push_back(bounded_close(object, hand, g, sim));
+    // The object's shape as Bullet's: one hull where Bullet uses one, else the parts of the
+    // convex decomposition.
+    std::vector<std::vector<Eigen::Vector3d>> candidate_parts;
+    if (!closes.empty() && closes.front().object.shape == ObjectShape::kConvexHull)
+      candidate_parts.push_back(object.vertices);
+    else
+      candidate_parts =
+          cached_convex_decomposition(object, DecompositionParams{}, p.cache_dir)->parts;
     // Mass as in Bullet (docs/physics.md §2): density × closed volume (hull volume for open
-    // meshes); MuJoCo sums the parts' hulls, which overlap and fill cavities, so the geoms'
-    // density is scaled to give that mass.
+    // meshes), or the simulated object's mass; MuJoCo sums the parts' hulls, which overlap and
+    // fill cavities, so the geoms' density is scaled to give that mass.
     MjcfParams mjcf;
     const std::optional<SolidVolume> closed = closed_mesh_volume(object);
     const double volume_m3 = closed ? closed->volume_m3 : convex_hull_volume(object).volume_m3;
     // Flat parts (a single face, a planar sheet) are dropped: MuJoCo's qhull refuses them.
     std::vector<std::vector<Eigen::Vector3d>> solid_parts;
     double parts_m3 = 0.0;
-    for (const auto& part : parts->parts) {
+    for (const auto& part : candidate_parts) {
       Mesh hull;
       hull.vertices = part;
       // convex_hull_volume reads the vertices that triangles use: a fan over all of them.
@@ -90,9 +109,12 @@ ExportOutcome export_job(const ExportJobParams& p) {
     if (solid_parts.empty())
       throw InputError("export: '" + plan.object_path +
                        "': the object is flat (no convex part with volume); MuJoCo needs one");
-    if (volume_m3 > 0.0 && parts_m3 > 0.0) mjcf.density_kgm3 *= volume_m3 / parts_m3;
-    out.files =
-        write_mjcf_scene(p.out, hand, grasps, plan_contact_model(plan), solid_parts, mjcf);
+    if (!closes.empty() && parts_m3 > 0.0)
+      mjcf.density_kgm3 = closes.front().object.mass_kg / parts_m3;
+    else if (volume_m3 > 0.0 && parts_m3 > 0.0)
+      mjcf.density_kgm3 *= volume_m3 / parts_m3;
+    out.files = write_mjcf_scene(p.out, hand, grasps, plan_contact_model(plan), solid_parts,
+                                 mjcf, closes);
     return out;
   }
 

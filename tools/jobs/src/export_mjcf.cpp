@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 #include "cordgrasp/core/atomic_file.h"
 #include "cordgrasp/core/error.h"
@@ -175,12 +176,13 @@ class HandWriter {
   std::vector<int> qpos_joints_;
 };
 
-/// +1 / −1: the direction an actor closes joint j in (its direction_speed's sign); 0: no actor.
-int closing_sign(const HandModel& hand, int j) {
+/// The actor entry driving joint j (its direction_speed: sign = closing direction, magnitude =
+/// relative speed); 0: no actor.
+double actor_speed(const HandModel& hand, int j) {
   for (const Actor& actor : hand.actors)
     for (const Actor::Entry& e : actor.joints)
-      if (e.joint == j) return e.direction_speed > 0 ? 1 : -1;
-  return 0;
+      if (e.joint == j && e.direction_speed != 0.0) return e.direction_speed;
+  return 0.0;
 }
 
 std::string joined(const Eigen::VectorXd& v) {
@@ -195,7 +197,12 @@ std::vector<std::string> write_mjcf_scene(const std::string& path, const HandMod
                                           const std::vector<Grasp>& grasps,
                                           const ContactModel& contact,
                                           const std::vector<std::vector<Eigen::Vector3d>>& parts,
-                                          const MjcfParams& params) {
+                                          const MjcfParams& params,
+                                          const std::vector<BoundedClose>& closes) {
+  if (!closes.empty() && closes.size() != grasps.size())
+    throw std::invalid_argument("write_mjcf_scene: " + std::to_string(closes.size()) +
+                                " bounded closes for " + std::to_string(grasps.size()) +
+                                " grasps");
   std::vector<std::string> files{path};
   const fs::path out_path(path);
   const std::string mesh_dir_name = out_path.stem().string() + "_meshes";
@@ -237,7 +244,7 @@ std::vector<std::string> write_mjcf_scene(const std::string& path, const HandMod
   x << "  <compiler angle=\"radian\" meshdir=\"" << escaped(mesh_dir_name)
     << "\" inertiafromgeom=\"auto\" balanceinertia=\"true\" boundmass=\"1e-6\""
        " boundinertia=\"1e-12\"/>\n";
-  x << "  <size nuser_actuator=\"1\"/>\n";
+  x << "  <size nuser_actuator=\"2\"/>\n";
   x << "  <option timestep=\"" << num(params.time_step_s)
     << "\" gravity=\"0 0 -9.81\" cone=\"elliptic\" impratio=\"10\"/>\n";
   x << "  <default>\n";
@@ -276,10 +283,12 @@ std::vector<std::string> write_mjcf_scene(const std::string& path, const HandMod
     if (joint.mimic) continue;
     actuated.push_back(j);
     const double effort = effort_of(joint, params);
+    const double speed = actor_speed(hand, j);
     const double kp = effort / (is_prismatic(joint) ? params.squeeze_m : params.squeeze_rad);
     x << "    <position name=\"" << escaped(joint.name) << "\" joint=\"" << escaped(joint.name)
       << "\" kp=\"" << num(kp) << "\" forcelimited=\"true\" forcerange=\"" << num(-effort) << " "
-      << num(effort) << "\" user=\"" << closing_sign(hand, j) << "\"/>\n";
+      << num(effort) << "\" user=\"" << (speed > 0 ? 1 : speed < 0 ? -1 : 0) << " "
+      << num(std::abs(speed)) << "\"/>\n";
   }
   x << "  </actuator>\n";
 
@@ -301,6 +310,32 @@ std::vector<std::string> write_mjcf_scene(const std::string& path, const HandMod
         << quat(g.X_OB.linear()) << "\" ctrl=\"" << joined(ctrl) << "\"/>\n";
     }
     x << "  </keyframe>\n";
+  }
+  if (!closes.empty()) {
+    // Each grasp's bounded close (docs/physics.md §3a) as Bullet runs it: the hand joints at
+    // the reach start (qpos order), per actuator the squeeze targets and effort limits.
+    const auto per_actuator = [&](const Eigen::VectorXd& v) {
+      Eigen::VectorXd out(static_cast<Eigen::Index>(actuated.size()));
+      for (size_t i = 0; i < actuated.size(); ++i) out[i] = v[actuated[i]];
+      return out;
+    };
+    const auto numeric = [&](size_t k, const char* what, const Eigen::VectorXd& v) {
+      x << "    <numeric name=\"" << MjcfNames::close_numeric(static_cast<int>(k), what)
+        << "\" size=\"" << v.size() << "\" data=\"" << joined(v) << "\"/>\n";
+    };
+    x << "  <custom>\n";
+    for (size_t k = 0; k < closes.size(); ++k) {
+      const BoundedClose& c = closes[k];
+      Eigen::VectorXd start(static_cast<Eigen::Index>(writer.qpos_joints().size()));
+      for (size_t i = 0; i < writer.qpos_joints().size(); ++i)
+        start[i] = c.q_start[writer.qpos_joints()[i]];
+      numeric(k, MjcfNames::kStart, start);
+      numeric(k, MjcfNames::kSqueeze, per_actuator(c.q_squeeze));
+      numeric(k, MjcfNames::kEffort, per_actuator(c.effort));
+      numeric(k, MjcfNames::kHoldEffort, per_actuator(c.hold_effort));
+      numeric(k, MjcfNames::kReachTime, Eigen::VectorXd::Constant(1, c.reach_time_s));
+    }
+    x << "  </custom>\n";
   }
   x << "</mujoco>\n";
   write_file_atomically(path, x.str());

@@ -58,6 +58,34 @@ SimResult validate_grasp(const Mesh& mesh, const HandModel& hand, const Grasp& g
                          const SimParams& params, const SimTests& tests = {},
                          const PhaseHook& hook = {});
 
+/// The bounded close (docs/physics.md §3a) of one grasp as GraspSimulation runs it, per
+/// HandModel joint: the reach start and the servos' targets and effort limits. For running the
+/// same protocol in another engine (`cordgrasp export --format mjcf`, docs/export.md).
+struct BoundedClose {
+  Eigen::VectorXd q_start;      ///< joints at the reach start (gap short, clear of the object)
+  Eigen::VectorXd q_plan;       ///< planned joints, couplings applied and clamped to the limits
+  /// Squeeze targets: squeeze_travel_m past the planned contacts (at each joint's lever) for
+  /// the pushing joints, the plan for the others.
+  Eigen::VectorXd q_squeeze;
+  /// Effort limit of the servo during reach and squeeze [N·m or N]: the weight-sized squeeze
+  /// effort for pushing joints, else the effort limit (a master's includes its mimic joints');
+  /// 0 for joints the physics locks at the plan (SimParams::lock_passive_joints).
+  Eigen::VectorXd effort;
+  /// Effort limit once a pushing joint is behind the plan: squeeze_hold_factor × effort, at
+  /// most the effort limit [N·m or N]; `effort` for the other joints.
+  Eigen::VectorXd hold_effort;
+  Eigen::VectorXd push_sign;    ///< +1 / −1: the direction a joint pushes in; 0: holds the plan
+  double reach_time_s = 0.0;    ///< duration of the reach from q_start to q_plan [s]
+  SimObjectInfo object;         ///< the object as simulated (mass, shape)
+};
+
+/// The bounded close of `grasp` (params.squeeze_travel_m > 0 and reach_start_gap_m > 0): builds
+/// the GraspSimulation world (the reach start is checked clear of the object there) and reads
+/// its close targets. @throws std::invalid_argument as validate_grasp(), or when the params
+/// have no bounded close.
+BoundedClose bounded_close(const Mesh& mesh, const HandModel& hand, const Grasp& grasp,
+                           const SimParams& params);
+
 /// The simulation behind validate_grasp(), one phase per call, for callers that want to
 /// interleave their own checks or drawing. Phases must run in protocol order (settle, close,
 /// then lift/shake or gravity6); each returns its PhaseResult. Not copyable; not thread-safe
@@ -108,6 +136,8 @@ class GraspSimulation {
 
  private:
   struct Impl;
+  friend BoundedClose bounded_close(const Mesh&, const HandModel&, const Grasp&,
+                                    const SimParams&);
   std::unique_ptr<Impl> impl_;
 };
 

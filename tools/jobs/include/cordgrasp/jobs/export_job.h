@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cordgrasp/core/hand_description.h"
+#include "cordgrasp/sim/sim_params.h"
 
 namespace cordgrasp {
 
@@ -32,6 +33,9 @@ struct ExportJobParams {
   HandLoadOptions hand_load;                 ///< package:// directories of the hand's URDF
   int grasps = -1;                           ///< export only the first K grasps (< 0: all)
   std::string cache_dir;                     ///< mjcf: on-disk convex decomposition cache
+  /// mjcf: object mass, density and squeeze factor over the plan's recorded ones (CLI --mass),
+  /// as `cordgrasp validate` takes them; the scene's bounded close is computed with them.
+  SimOverrides physics;
 };
 
 /// What export_job() wrote.

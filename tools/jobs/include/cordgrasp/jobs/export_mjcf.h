@@ -8,6 +8,7 @@
 #include "cordgrasp/core/contact_model.h"
 #include "cordgrasp/core/grasp.h"
 #include "cordgrasp/core/hand_model.h"
+#include "cordgrasp/sim/validate_grasp.h"
 
 namespace cordgrasp {
 
@@ -36,16 +37,28 @@ struct MjcfNames {
   static constexpr const char* kHandTarget = "hand_target";
   /// Keyframe of grasp k: "grasp_<k>".
   static std::string keyframe(int k) { return "grasp_" + std::to_string(k); }
+  /// Custom numeric `<what>` of grasp k's bounded close: "grasp_<k>_<what>" (docs/export.md).
+  static std::string close_numeric(int k, const std::string& what) {
+    return keyframe(k) + "_" + what;
+  }
+  static constexpr const char* kStart = "start";        ///< hand joints at the reach start
+  static constexpr const char* kSqueeze = "squeeze";    ///< servo targets of the squeeze
+  static constexpr const char* kEffort = "effort";      ///< servo effort limits
+  static constexpr const char* kHoldEffort = "hold_effort";  ///< limits behind the plan
+  static constexpr const char* kReachTime = "reach_s";  ///< duration of the reach [s]
 };
 
 /// Writes the MJCF scene of `grasps` (world = object frame) to `path` and the hand's meshes
 /// as binary STL into "<stem>_meshes/" beside it; the object's convex parts (hull vertices,
-/// object frame) are inline. Returns the files written, `path` first.
-/// @throws InputError when a file cannot be written.
+/// object frame) are inline. `closes` (one per grasp, or empty) adds each grasp's bounded close
+/// as `<custom><numeric>` elements. Returns the files written, `path` first.
+/// @throws InputError when a file cannot be written; std::invalid_argument when `closes` is
+/// neither empty nor one per grasp.
 std::vector<std::string> write_mjcf_scene(const std::string& path, const HandModel& hand,
                                           const std::vector<Grasp>& grasps,
                                           const ContactModel& contact,
                                           const std::vector<std::vector<Eigen::Vector3d>>& parts,
-                                          const MjcfParams& params = {});
+                                          const MjcfParams& params = {},
+                                          const std::vector<BoundedClose>& closes = {});
 
 }  // namespace cordgrasp
