@@ -91,6 +91,26 @@ class RangeCheck {
   }
 };
 
+/// The "(preset)" fields of SimParams, one row per protocol (docs/physics.md §3, §6).
+struct ProtocolPreset {
+  Protocol protocol;
+  double time_step_s;
+  int solver_iterations;
+  double lift_time_s, lift_hold_s, shake_time_s;
+  double rock_frequency_hz;  ///< one period in rock_time_s: tilts both ways
+  double rock_time_s;
+  bool shake_all_axes_at_once;
+  double gravity6_time_s, reach_start_fraction, reach_start_gap_m, squeeze_travel_m;
+  double squeeze_max_time_s, rest_exit_time_s;
+  bool exit_on_failure;
+};
+constexpr ProtocolPreset kPresets[] = {
+    // protocol           step        iter lift hold shake rock Hz, s  all axes g6  reach gap  travel squeeze rest exit
+    {Protocol::kQuick,    1.0 / 960.0, 50, 0.5, 0.3, 0.5, 2.0, 0.5, false, 0.5, 0.8, 0.0,  0.0,  0.5, 0.1, true},
+    {Protocol::kStandard, 1.0 / 960.0, 30, 0.5, 0.3, 0.5, 2.0, 0.5, true,  0.5, 0.0, 3e-3, 1e-3, 0.3, 0.1, true},
+    {Protocol::kThorough, 1.0 / 960.0, 50, 1.0, 1.0, 1.0, 1.0, 1.0, false, 1.0, 0.0, 0.0,  0.0,  0.5, 0.0, false},
+};
+
 }  // namespace
 
 void check_sim_params(const SimParams& params) {
@@ -115,57 +135,26 @@ Protocol parse_protocol(const std::string& text) {
 }
 
 void apply_protocol(Protocol protocol, SimParams* params) {
-  SimParams& p = *params;
-  p.protocol = protocol;
-  switch (protocol) {
-    case Protocol::kQuick:
-      p.time_step_s = 1.0 / 960.0;
-      p.lift_time_s = 0.5;
-      p.lift_hold_s = 0.3;
-      p.shake_time_s = 0.5;
-      p.rock_frequency_hz = 2.0;  // one period in rock_time_s: tilts both ways
-      p.rock_time_s = 0.5;
-      p.shake_all_axes_at_once = false;
-      p.gravity6_time_s = 0.5;
-      p.reach_start_fraction = 0.8;
-      p.reach_start_gap_m = 0.0;
-      p.squeeze_travel_m = 0.0;
-      p.squeeze_max_time_s = 0.5;
-      p.rest_exit_time_s = 0.1;
-      p.exit_on_failure = true;
-      return;
-    case Protocol::kStandard:
-      p.time_step_s = 1.0 / 960.0;
-      p.lift_time_s = 0.5;
-      p.lift_hold_s = 0.3;
-      p.shake_time_s = 0.5;
-      p.rock_frequency_hz = 2.0;
-      p.rock_time_s = 0.5;
-      p.shake_all_axes_at_once = true;
-      p.gravity6_time_s = 0.5;
-      p.reach_start_fraction = 0.0;
-      p.reach_start_gap_m = 3e-3;
-      p.squeeze_travel_m = 1e-3;
-      p.squeeze_max_time_s = 0.3;
-      p.rest_exit_time_s = 0.1;
-      p.exit_on_failure = true;
-      return;
-    case Protocol::kThorough:
-      p.time_step_s = 1.0 / 960.0;
-      p.lift_time_s = 1.0;
-      p.lift_hold_s = 1.0;
-      p.shake_time_s = 1.0;
-      p.rock_frequency_hz = 1.0;
-      p.rock_time_s = 1.0;
-      p.shake_all_axes_at_once = false;
-      p.gravity6_time_s = 1.0;
-      p.reach_start_fraction = 0.0;
-      p.reach_start_gap_m = 0.0;
-      p.squeeze_travel_m = 0.0;
-      p.squeeze_max_time_s = 0.5;
-      p.rest_exit_time_s = 0.0;
-      p.exit_on_failure = false;
-      return;
+  for (const ProtocolPreset& preset : kPresets) {
+    if (preset.protocol != protocol) continue;
+    SimParams& p = *params;
+    p.protocol = protocol;
+    p.time_step_s = preset.time_step_s;
+    p.solver_iterations = preset.solver_iterations;
+    p.lift_time_s = preset.lift_time_s;
+    p.lift_hold_s = preset.lift_hold_s;
+    p.shake_time_s = preset.shake_time_s;
+    p.rock_frequency_hz = preset.rock_frequency_hz;
+    p.rock_time_s = preset.rock_time_s;
+    p.shake_all_axes_at_once = preset.shake_all_axes_at_once;
+    p.gravity6_time_s = preset.gravity6_time_s;
+    p.reach_start_fraction = preset.reach_start_fraction;
+    p.reach_start_gap_m = preset.reach_start_gap_m;
+    p.squeeze_travel_m = preset.squeeze_travel_m;
+    p.squeeze_max_time_s = preset.squeeze_max_time_s;
+    p.rest_exit_time_s = preset.rest_exit_time_s;
+    p.exit_on_failure = preset.exit_on_failure;
+    return;
   }
   throw std::invalid_argument("apply_protocol: unknown protocol");
 }

@@ -3,11 +3,7 @@
 
 #include <cmath>
 
-#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/candidate_measures.h"
-#include "cordgrasp/core/plan_cord_grasps.h"
-#include "cordgrasp/core/shapes.h"
-#include "test_hands.h"
 
 namespace cordgrasp {
 namespace {
@@ -69,31 +65,6 @@ TEST(CandidateMeasures, ThePalmTakesWhatPressesTheObjectOntoIt) {
   EXPECT_NEAR(candidate_measures(no_palm, three_finger_setup(), Eigen::Vector3d::Zero(), 0.05)
                   .push_imbalance,
               1.0, 1e-12);
-}
-
-GraspRegion cylinder_region(double r, double d) {
-  GraspRegion g;
-  g.p1 = {d, 0.0, 0.0};
-  const double x = r * r / d, y = r * std::sqrt(1.0 - r * r / (d * d));
-  g.p_l = {x, y, 0.0};
-  g.p_r = {x, -y, 0.0};
-  g.p_m = 0.5 * (g.p_l + g.p_r);
-  g.normal = Eigen::Vector3d::UnitZ();
-  g.chi_m2 = 1e-4;
-  return g;
-}
-
-TEST(CandidateMeasures, PlannedGraspsCarryThem) {
-  const Mesh cylinder = make_cylinder_mesh(0.015, 0.3);
-  const HandModel hand = test::make_three_finger_hand();
-  auto collider = make_bullet_hand_collider(hand, cylinder);
-  const std::vector<GraspRegion> regions = {cylinder_region(0.015, 0.15)};
-  const PlanResult plan =
-      plan_cord_grasps_from_regions(cylinder, hand, *collider, regions, PlanParams{});
-  ASSERT_EQ(plan.grasps.size(), 1u);
-  const Grasp& g = plan.grasps[0];
-  EXPECT_GE(g.measures.fingers_in_contact, 2);
-  EXPECT_LT(g.measures.com_offset, 0.1);  // on the cylinder's middle cross-section
 }
 
 }  // namespace

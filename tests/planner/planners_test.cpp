@@ -184,5 +184,18 @@ TEST(PlanGenericGrasps, StopsAtMaxAttemptsWhenNothingCanHold) {
   EXPECT_FALSE(plan.stats.timed_out);
 }
 
+TEST(CordPlanner, PlannedGraspsCarryTheirCandidateMeasures) {
+  const Mesh cylinder = make_cylinder_mesh(0.015, 0.3);
+  const HandModel hand = test::make_three_finger_hand();
+  auto collider = make_bullet_hand_collider(hand, cylinder);
+  const std::vector<GraspRegion> regions = {cylinder_region(0.015, 0.15, 1e-4)};
+  const PlanResult plan =
+      plan_cord_grasps_from_regions(cylinder, hand, *collider, regions, PlanParams{});
+  ASSERT_EQ(plan.grasps.size(), 1u);
+  const Grasp& g = plan.grasps[0];
+  EXPECT_GE(g.measures.fingers_in_contact, 2);
+  EXPECT_LT(g.measures.com_offset, 0.1);  // on the cylinder's middle cross-section
+}
+
 }  // namespace
 }  // namespace cordgrasp

@@ -173,7 +173,7 @@ TEST(PlanValidatedGrasps, ValidatingThePlanAgainTestsTheObjectItWasAcceptedWith)
 }
 
 TEST(PlanValidatedGrasps, ItsPhysicsSettingsFileIsRecordedAndUsedAgainByValidate) {
-  constexpr int kIterations = 30;     // not the default 50
+  constexpr int kIterations = 40;     // not the default 30
   constexpr double kLift_m = 0.05;    // not the default 10 cm
   const std::string dir = temp_dir("physics_file");
   const std::string file = dir + "/physics.yaml";

@@ -6,38 +6,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include "cordgrasp/sim/motion_profiles.h"
+
 namespace cordgrasp::mujoco_check {
 namespace {
-
-/// Minimum-jerk profile s(τ) = 10τ³ − 15τ⁴ + 6τ⁵ on [0, 1] (as Bullet's reach and lift).
-double min_jerk(double tau) {
-  if (tau <= 0.0) return 0.0;
-  if (tau >= 1.0) return 1.0;
-  return tau * tau * tau * (10.0 + tau * (-15.0 + 6.0 * tau));
-}
-
-/// ds/dτ of min_jerk.
-double min_jerk_rate(double tau) {
-  if (tau <= 0.0 || tau >= 1.0) return 0.0;
-  return 30.0 * tau * tau * (1.0 - tau) * (1.0 - tau);
-}
-
-/// sin(2πft + phase) faded in and out over a quarter period (as Bullet's shake).
-double faded_sine(double t, double frequency_hz, double duration_s, double phase_rad) {
-  if (t <= 0.0 || t >= duration_s) return 0.0;
-  const double ramp = std::min(0.25 / frequency_hz, 0.5 * duration_s);
-  double envelope = 1.0;
-  if (t < ramp) envelope = std::pow(std::sin(0.5 * M_PI * t / ramp), 2);
-  if (duration_s - t < ramp) envelope = std::pow(std::sin(0.5 * M_PI * (duration_s - t) / ramp), 2);
-  return envelope * std::sin(2.0 * M_PI * frequency_hz * t + phase_rad);
-}
-
-/// Faded sines along x, y, z of W, each a third of a period after the last.
-Eigen::Vector3d faded_lissajous(double t, double frequency_hz, double duration_s) {
-  Eigen::Vector3d v;
-  for (int a = 0; a < 3; ++a) v[a] = faded_sine(t, frequency_hz, duration_s, 2.0 * M_PI * a / 3.0);
-  return v;
-}
 
 Eigen::Isometry3d body_pose(const mjData* d, int body) {
   Eigen::Isometry3d X = Eigen::Isometry3d::Identity();

@@ -28,9 +28,9 @@ def test_validate_is_deterministic_and_counts_trials(plan):
 
 def test_validate_reads_a_physics_settings_file(plan, tmp_path):
     settings = tmp_path / "physics.yaml"
-    settings.write_text("solver_iterations: 30\nlift_height_m: 0.05\n")
+    settings.write_text("solver_iterations: 40\nlift_height_m: 0.05\n")
     sim = cordgrasp.validate(plan, tests="lift", physics=str(settings))
-    assert sim["parameters"]["solver_iterations"] == 30
+    assert sim["parameters"]["solver_iterations"] == 40
     assert sim["parameters"]["lift_height_m"] == 0.05
     settings.write_text("solver_iterations: 0\n")
     with pytest.raises(cordgrasp.InputError, match="solver_iterations"):

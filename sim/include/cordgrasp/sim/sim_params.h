@@ -73,8 +73,8 @@ struct SimParams {
   /// Fixed time step [s] (preset): 1/960 s in quick and thorough; fast's 1/480 s halves the
   /// steps but loses grasps that thorough holds (docs/physics.md §5).
   double time_step_s = 1.0 / 960.0;
-  /// Sequential-impulse iterations per step; 50 agree best with the reference on all hands.
-  int solver_iterations = 50;
+  /// Sequential-impulse iterations per step (preset): 30 in standard, 50 in quick and thorough.
+  int solver_iterations = 30;
   /// Error reduction of contacts and joint constraints (Bullet erp, erp2) [0..1]; Bullet's.
   double erp = 0.2;
   /// Contact stiffness [N/m]; 0: rigid contacts (compliant ones lost Schunk grasps).
@@ -304,7 +304,7 @@ void apply_sim_overrides(const SimOverrides& overrides, SimParams* params);
 /// neither.
 SimOverrides sim_overrides_or(const SimOverrides& given, const SimOverrides& recorded);
 
-/// Sets the "(preset)" fields of `params` (time step, phase durations, shake path, rock
+/// Sets the "(preset)" fields of `params` (time step, solver iterations, phase durations, shake path, rock
 /// frequency, reach start, early exits) and params->protocol to `protocol`'s values; leaves
 /// the others.
 void apply_protocol(Protocol protocol, SimParams* params);
