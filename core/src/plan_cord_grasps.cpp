@@ -70,6 +70,10 @@ PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand
       Grasp grasp;
       if (!internal::attempt_grasp(hand, collider, ctx, params, X_OG, travel, stats, grasp))
         continue;
+      if (!differs_from_all(grasp, result.grasps, params.diversity, ctx.radius_m)) {
+        ++stats.similar;
+        continue;
+      }
       grasp.region_rank = static_cast<int>(rank);
       grasp.chi_m2 = region.chi_m2;
       grasp.region = region;

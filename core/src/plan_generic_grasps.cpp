@@ -83,6 +83,10 @@ PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
     X_OG.translation() = p;
     Grasp grasp;
     if (!internal::attempt_grasp(hand, collider, ctx, params, X_OG, 0.0, stats, grasp)) continue;
+    if (!differs_from_all(grasp, result.grasps, params.diversity, ctx.radius_m)) {
+      ++stats.similar;
+      continue;
+    }
     if (!stats.first_force_closure_s) stats.first_force_closure_s = seconds_since(start);
     result.grasps.push_back(std::move(grasp));
   }

@@ -13,6 +13,7 @@
 #include <unistd.h>
 #include <nlohmann/json.hpp>
 
+#include "cordgrasp/core/assets.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_properties.h"
@@ -90,23 +91,50 @@ TEST(PlanValidatedGrasps, AcceptedGraspsHoldWhenTheWrittenPlanIsValidatedAgain) 
   std::filesystem::remove_all(dir);
 }
 
+/// Every pair of `grasps` passes the diversity test of `p` on an object of radius `radius_m`,
+/// checked from the pose distances (not by grasps_differ itself).
+void expect_pairwise_distinct(const std::vector<Grasp>& grasps, const DiversityParams& p,
+                              double radius_m, const std::string& what) {
+  const double min_gcp_m =
+      std::max(p.min_gcp_distance_m, p.min_gcp_distance_per_radius * radius_m);
+  for (size_t a = 0; a < grasps.size(); ++a)
+    for (size_t b = a + 1; b < grasps.size(); ++b) {
+      const GraspPoseDistance d = grasp_pose_distance(grasps[a], grasps[b]);
+      EXPECT_TRUE(d.gcp_m >= min_gcp_m || d.hand_turn_rad >= p.min_hand_turn_deg * M_PI / 180.0)
+          << what << " grasps " << a << "," << b << ": " << d.gcp_m << " m, "
+          << d.hand_turn_rad << " rad";
+    }
+}
+
 TEST(PlanValidatedGrasps, AcceptedGraspsDifferPairwiseByTheDiversityThreshold) {
   BoxPlan box(3);
-  box.v.min_gcp_distance_m = 0.02;  // stricter than the defaults, so near copies do occur
-  box.v.min_hand_turn_deg = 45.0;
+  DiversityParams& d = box.job.plan.diversity;
+  d.min_gcp_distance_m = 0.02;  // stricter than the defaults, so near copies do occur
+  d.min_hand_turn_deg = 45.0;
   const PlanDocument plan = box.plan();
   ASSERT_GE(plan.grasps.size(), 2u);
   EXPECT_GT(plan.validation->stats.similar, 0);
-  const double min_gcp_m =
-      min_gcp_distance_m(box.v, bounding_radius(box.mesh, vertex_mean(box.mesh)));
-  ASSERT_GE(min_gcp_m, box.v.min_gcp_distance_m);
-  for (size_t a = 0; a < plan.grasps.size(); ++a)
-    for (size_t b = a + 1; b < plan.grasps.size(); ++b) {
-      const GraspPoseDistance d = grasp_pose_distance(plan.grasps[a], plan.grasps[b]);
-      EXPECT_TRUE(d.gcp_m >= min_gcp_m ||
-                  d.hand_turn_rad >= box.v.min_hand_turn_deg * M_PI / 180.0)
-          << a << "," << b << ": " << d.gcp_m << " m, " << d.hand_turn_rad << " rad";
-    }
+  expect_pairwise_distinct(plan.grasps, d, bounding_radius(box.mesh, vertex_mean(box.mesh)),
+                           "validated box");
+}
+
+TEST(PlainPlanning, ReturnsGraspsThatDifferPairwiseOnEveryShippedObject) {
+  // `cordgrasp plan --grasps 4` with its defaults (the default hand, the cord planner).
+  constexpr int kGrasps = 4;
+  const HandModel hand = load_hand(default_hand_name());
+  PlanJobParams job;
+  job.plan.grasps = kGrasps;
+  const auto objects = test::files_in(test::source_dir() + "/assets/objects", ".obj");
+  ASSERT_GE(objects.size(), 10u);
+  int with_several = 0;
+  for (const std::string& path : objects) {
+    const Mesh mesh = load_job_mesh(job, path);
+    const PlanDocument plan = plan_job(job, mesh, path, hand);
+    with_several += plan.grasps.size() >= 2;
+    expect_pairwise_distinct(plan.grasps, job.plan.diversity,
+                             bounding_radius(mesh, vertex_mean(mesh)), path);
+  }
+  EXPECT_GE(with_several, 5);  // the test has pairs to check
 }
 
 TEST(PlanValidatedGrasps, ValidationRecordRoundTripsThroughPlanJsonAndIsReadStrictly) {
@@ -120,7 +148,7 @@ TEST(PlanValidatedGrasps, ValidationRecordRoundTripsThroughPlanJsonAndIsReadStri
   EXPECT_EQ(back.validation->grasps[0].held_trials, plan.validation->grasps[0].held_trials);
   EXPECT_EQ(back.validation->grasps[0].lift, plan.validation->grasps[0].lift);
   EXPECT_EQ(back.validation->stats.accepted, plan.validation->stats.accepted);
-  EXPECT_EQ(back.validation->params.min_hand_turn_deg, box.v.min_hand_turn_deg);
+  EXPECT_EQ(back.params.diversity.min_hand_turn_deg, box.job.plan.diversity.min_hand_turn_deg);
 
   nlohmann::json unknown = j;
   unknown["grasps"][0]["validation"]["held"] = 1;
@@ -207,7 +235,7 @@ TEST(PlanValidatedGrasps, ItsPhysicsSettingsFileIsRecordedAndUsedAgainByValidate
 }
 
 TEST(GraspsDiffer, ByGcpDistanceOrHandTurn) {
-  ValidationParams v;  // 1 cm or a quarter of the radius, 20°
+  const DiversityParams v;  // 1 cm or a quarter of the radius, 20°
   constexpr double kSmallObjectRadius_m = 0.02;  // a quarter is 5 mm: 1 cm counts
   constexpr double kLargeObjectRadius_m = 0.08;  // a quarter is 2 cm
   Grasp a, b;

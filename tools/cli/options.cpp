@@ -136,6 +136,19 @@ void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
   cmd->add_option("--grasps,-n", p.plan.grasps, "Stop after this many force-closure grasps")
       ->check(whole_number_in(1, 10000))
       ->capture_default_str();
+  DiversityParams& d = p.plan.diversity;
+  cmd->add_option("--min-gcp-distance", d.min_gcp_distance_m,
+                  "Grasps differ pairwise: GCPs at least this far apart [m]...")
+      ->check(number_in(0.0, 10.0))
+      ->capture_default_str();
+  cmd->add_option("--min-gcp-distance-per-radius", d.min_gcp_distance_per_radius,
+                  "...or this fraction of the object's bounding radius, if more...")
+      ->check(number_in(0.0, 10.0))
+      ->capture_default_str();
+  cmd->add_option("--min-hand-turn", d.min_hand_turn_deg,
+                  "...or hand orientations at least this far apart [deg] (all 0: no rule)")
+      ->check(number_in(0.0, 180.0))
+      ->capture_default_str();
   cmd->add_option("--max-attempts", p.plan.max_attempts,
                   "Stop after this many finger-stage attempts: the stopping rule, the same on "
                   "every machine")

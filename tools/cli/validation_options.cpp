@@ -46,18 +46,6 @@ void add_validation_options(CLI::App* cmd, ValidationParams& v) {
                   "[m]; 0: off")
       ->check(number_in(0.0, 10.0))
       ->capture_default_str();
-  cmd->add_option("--min-gcp-distance", v.min_gcp_distance_m,
-                  "Accepted grasps differ: GCPs at least this far apart [m]...")
-      ->check(number_in(0.0, 10.0))
-      ->capture_default_str();
-  cmd->add_option("--min-gcp-distance-per-radius", v.min_gcp_distance_per_radius,
-                  "...or this fraction of the object's bounding radius, if more...")
-      ->check(number_in(0.0, 10.0))
-      ->capture_default_str();
-  cmd->add_option("--min-hand-turn", v.min_hand_turn_deg,
-                  "...or hand orientations at least this far apart [deg]")
-      ->check(number_in(0.0, 180.0))
-      ->capture_default_str();
   add_trial_nudge_options(cmd, v.perturbation);
   cmd->add_option("--trial-seed", v.trial_seed, "Seed of the nudges' random directions")
       ->check(seed_value())

@@ -17,9 +17,9 @@ extern const char* const kPhysicsHelp;
 /// Adds --trial-offset [m] and --trial-turn [rad] (one range wherever they appear), bound to `p`.
 void add_trial_nudge_options(CLI::App* cmd, PerturbationParams& p);
 
-/// Adds --physics (the settings file), --trials, --min-held, --require-held-as-planned, --budget, --squeeze-shift-limit,
-/// --min-gcp-distance, --min-gcp-distance-per-radius, --min-hand-turn, --trial-offset,
-/// --trial-turn and --trial-seed, bound to `v`.
+/// Adds --physics (the settings file), --trials, --min-held, --require-held-as-planned,
+/// --budget, --squeeze-shift-limit, --trial-offset, --trial-turn and --trial-seed, bound to
+/// `v`.
 void add_validation_options(CLI::App* cmd, ValidationParams& v);
 
 /// Adds --mass [kg], --density [kg/m³] and --squeeze-weight, bound to `o`; `recorded_note`

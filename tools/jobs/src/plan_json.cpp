@@ -168,6 +168,7 @@ nlohmann::json stats_json(const PlanStats& s) {
           {"one_contact", s.one_contact},
           {"cannot_retreat", s.cannot_retreat},
           {"not_force_closure", s.not_force_closure},
+          {"similar", s.similar},
           {"setup_s", s.setup_s},
           {"exploration_s", s.exploration_s},
           {"finger_s", s.finger_s},
@@ -189,6 +190,7 @@ PlanStats stats_from_json(const nlohmann::json& j) {
   s.one_contact = j.value("one_contact", 0);
   s.cannot_retreat = j.value("cannot_retreat", 0);
   s.not_force_closure = j.value("not_force_closure", 0);
+  s.similar = j.value("similar", 0);
   s.setup_s = j.value("setup_s", 0.0);
   s.exploration_s = j.value("exploration_s", 0.0);
   s.finger_s = j.value("finger_s", 0.0);
@@ -293,9 +295,22 @@ void upgrade_plan_from_version_2(nlohmann::json* plan) {
   if (j.contains("inputs") && j["inputs"].is_object() && j["inputs"].contains("object") &&
       j["inputs"]["object"].is_object() && !j["inputs"]["object"].contains("scale"))
     j["inputs"]["object"]["scale"] = 1.0;
+  // New in 3: the diversity rule belongs to the planner (parameters.diversity); version 2
+  // had it in validated planning only, so plain version-2 plans record none.
+  nlohmann::json diversity = params_to_json(DiversityParams{0.0, 0.0, 0.0});
   if (j.contains("validation") && j["validation"].is_object() &&
-      j["validation"].contains("parameters") && j["validation"]["parameters"].is_object())
-    j["validation"]["parameters"]["physics_file"] = "";  // new in 3
+      j["validation"].contains("parameters") && j["validation"]["parameters"].is_object()) {
+    nlohmann::json& v = j["validation"]["parameters"];
+    for (const char* key : {"min_gcp_distance_m", "min_gcp_distance_per_radius",
+                            "min_hand_turn_deg"})
+      if (v.contains(key)) {
+        diversity[key] = v[key];
+        v.erase(key);
+      }
+    v["physics_file"] = "";
+  }
+  if (j.contains("parameters") && j["parameters"].is_object())
+    j["parameters"]["diversity"] = diversity;
   if (j.contains("grasps") && j["grasps"].is_array())
     for (nlohmann::json& g : j["grasps"]) {
       if (!g.is_object()) continue;

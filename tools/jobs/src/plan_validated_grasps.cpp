@@ -47,6 +47,7 @@ void add_stats(PlanStats& total, const PlanStats& s) {
   total.one_contact += s.one_contact;
   total.cannot_retreat += s.cannot_retreat;
   total.not_force_closure += s.not_force_closure;
+  total.similar += s.similar;
   total.setup_s += s.setup_s;
   total.finger_s += s.finger_s;
   total.quality_s += s.quality_s;
@@ -135,25 +136,6 @@ Outcome phase_outcome(const SimResult& r, const char* name) {
 
 }  // namespace
 
-GraspPoseDistance grasp_pose_distance(const Grasp& a, const Grasp& b) {
-  GraspPoseDistance d;
-  d.gcp_m = (a.X_OG.translation() - b.X_OG.translation()).norm();
-  const Eigen::AngleAxisd turn(a.X_OB.linear().transpose() * b.X_OB.linear());
-  d.hand_turn_rad = std::abs(turn.angle());
-  return d;
-}
-
-double min_gcp_distance_m(const ValidationParams& p, double object_radius_m) {
-  return std::max(p.min_gcp_distance_m, p.min_gcp_distance_per_radius * object_radius_m);
-}
-
-bool grasps_differ(const Grasp& a, const Grasp& b, const ValidationParams& p,
-                   double object_radius_m) {
-  const GraspPoseDistance d = grasp_pose_distance(a, b);
-  return d.gcp_m >= min_gcp_distance_m(p, object_radius_m) ||
-         d.hand_turn_rad >= p.min_hand_turn_deg * M_PI / 180.0;
-}
-
 PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationParams& v,
                                    const Mesh& mesh, const std::string& object_path,
                                    const HandModel& hand, int jobs,
@@ -210,9 +192,7 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
     }
     ++candidate;
     if (!stats.first_force_closure_s) stats.first_force_closure_s = seconds_since(start);
-    const bool differs = std::all_of(doc.grasps.begin(), doc.grasps.end(),
-                                     [&](const Grasp& a) { return grasps_differ(a, *g, v, radius_m); });
-    if (!differs) {
+    if (!differs_from_all(*g, doc.grasps, doc.params.diversity, radius_m)) {
       ++vs.similar;
       say("candidate " + std::to_string(candidate) + ": a near copy of an accepted grasp");
       continue;

@@ -60,12 +60,14 @@ std::string run_report_markdown(const RunReport& rep) {
     md << "- Validated planning: accepted when held in ≥ " << v.min_held << " of " << v.trials
        << " trials" << (v.require_held_as_planned ? ", the first as planned" : "") << " ("
        << v.tests << ", " << to_string(v.protocol) << " protocol), squeeze shift "
-       << "limit " << num(1e3 * v.squeeze_shift_limit_m, "%.0f") << " mm, grasps differ by ≥ "
-       << num(1e3 * v.min_gcp_distance_m, "%.0f") << " mm (" 
-       << num(100.0 * v.min_gcp_distance_per_radius, "%.0f")
-       << " % of the object's bounding radius, if more) or ≥ "
-       << num(v.min_hand_turn_deg, "%.0f") << "°, budget " << num(v.budget_s) << " s\n";
+       << "limit " << num(1e3 * v.squeeze_shift_limit_m, "%.0f") << " mm, budget "
+       << num(v.budget_s) << " s\n";
   }
+  const DiversityParams& d = plan.params.diversity;
+  md << "- Grasps differ pairwise by ≥ " << num(1e3 * d.min_gcp_distance_m, "%.0f") << " mm ("
+     << num(100.0 * d.min_gcp_distance_per_radius, "%.0f")
+     << " % of the object's bounding radius, if more) or ≥ " << num(d.min_hand_turn_deg, "%.0f")
+     << "° of hand turn\n";
   md << "\n## Result\n\n";
   if (s.timed_out)
     md << "**Machine-dependent result:** the " << num(plan.params.time_limit_s)

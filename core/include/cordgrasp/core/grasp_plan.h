@@ -5,6 +5,7 @@
 
 #include "cordgrasp/core/finger_stage.h"
 #include "cordgrasp/core/grasp.h"
+#include "cordgrasp/core/grasp_diversity.h"
 #include "cordgrasp/core/grasp_quality.h"
 
 namespace cordgrasp {
@@ -22,13 +23,15 @@ struct PlanParams {
   /// The stopping rule: at most this many finger-stage attempts (both planners), so a seed
   /// gives the same plan on any machine. The cord planner also stops when its regions run out.
   int max_attempts = 500;
+  /// Both planners return only grasps that differ pairwise (validated planning accepts so).
+  DiversityParams diversity;
 
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
   void Serialize(Archive* a) {
     visit_fields(a, CORDGRASP_NVP(grasps), CORDGRASP_NVP(time_limit_s), CORDGRASP_NVP(seed),
                  CORDGRASP_NVP(finger), CORDGRASP_NVP(quality), CORDGRASP_NVP(roll_retry),
-                 CORDGRASP_NVP(max_attempts));
+                 CORDGRASP_NVP(max_attempts), CORDGRASP_NVP(diversity));
   }
 };
 
@@ -42,6 +45,7 @@ struct PlanStats {
   int one_contact = 0;         ///< attempts ending with fewer than min_contacts contacts
   int cannot_retreat = 0;      ///< attempts where the hand could not get collision-free
   int not_force_closure = 0;   ///< attempts with contacts but no force closure
+  int similar = 0;             ///< force-closure grasps not returned: too like an earlier one
   double setup_s = 0.0;        ///< hand setup and object wrench-space preparation
   double exploration_s = 0.0;  ///< cord exploration
   double finger_s = 0.0;       ///< all finger-stage runs

@@ -31,12 +31,6 @@ struct ValidationParams {
   /// Early rejection (SimParams::squeeze_shift_limit_m): a candidate whose object moves
   /// farther than this while closing is dropped before lift and shake [m]; 0: off.
   double squeeze_shift_limit_m = 0.05;
-  /// Two accepted grasps differ when their GCPs are at least this far apart... [m]
-  double min_gcp_distance_m = 0.01;
-  /// ...or this fraction of the object's bounding radius, if that is more [-]...
-  double min_gcp_distance_per_radius = 0.25;
-  /// ...or their hand orientations differ by at least this angle [deg].
-  double min_hand_turn_deg = 20.0;
   PerturbationParams perturbation;  ///< nudge of trials 2..N (as `validate --trials`)
   std::uint64_t trial_seed = 1;     ///< seed of the nudges' directions
   /// Object mass and grip of every trial over the SimParams given (CLI --mass, --density,
@@ -52,8 +46,7 @@ struct ValidationParams {
     visit_fields(a, CORDGRASP_NVP(tests), CORDGRASP_NVP(protocol), CORDGRASP_NVP(trials),
                  CORDGRASP_NVP(min_held), CORDGRASP_NVP(require_held_as_planned),
                  CORDGRASP_NVP(budget_s),
-                 CORDGRASP_NVP(squeeze_shift_limit_m), CORDGRASP_NVP(min_gcp_distance_m),
-                 CORDGRASP_NVP(min_gcp_distance_per_radius), CORDGRASP_NVP(min_hand_turn_deg), CORDGRASP_NVP(perturbation),
+                 CORDGRASP_NVP(squeeze_shift_limit_m), CORDGRASP_NVP(perturbation),
                  CORDGRASP_NVP(trial_seed), CORDGRASP_NVP(physics),
                  CORDGRASP_NVP(physics_file));
   }
@@ -120,23 +113,5 @@ struct PlanValidation {
   ValidationStats stats;
   std::vector<GraspValidation> grasps;  ///< one per plan grasp, in the same order
 };
-
-/// GCP distance of two grasps [m] and the angle between their hand orientations [rad].
-struct GraspPoseDistance {
-  double gcp_m = 0.0;
-  double hand_turn_rad = 0.0;
-};
-
-/// Pose distance of grasps a and b (X_OG translations; rotation from X_OB_a to X_OB_b).
-GraspPoseDistance grasp_pose_distance(const Grasp& a, const Grasp& b);
-
-/// GCP distance at which two grasps of an object of bounding radius `object_radius_m` differ:
-/// max(min_gcp_distance_m, min_gcp_distance_per_radius × object_radius_m) [m].
-double min_gcp_distance_m(const ValidationParams& p, double object_radius_m);
-
-/// True when a and b, grasps of an object of bounding radius `object_radius_m`, differ: GCPs
-/// min_gcp_distance_m(p, object_radius_m) apart or hands turned ≥ min_hand_turn_deg apart.
-bool grasps_differ(const Grasp& a, const Grasp& b, const ValidationParams& p,
-                   double object_radius_m);
 
 }  // namespace cordgrasp

@@ -80,7 +80,8 @@ nlohmann::json read_plan_json(const std::string& path);
 /// (parameters.candidate, stats.filtered; they only chose which grasps were planned) and adds
 /// what early version-2 plans lack, as version 2 read it (inputs.object.scale 1, the grasps'
 /// preshape_joints {}, alpha_approach_rad = alpha_rad, default measures; no validation
-/// physics_file).
+/// physics_file) and moves validated planning's diversity rule to parameters.diversity (plain
+/// version-2 plans had none: all 0).
 void upgrade_plan_from_version_2(nlohmann::json* plan);
 
 /// Hand description path recorded in a plan (to load the hand before plan_from_json).
