@@ -32,7 +32,7 @@ constexpr std::uint64_t kPlanSeed = 7;
 nlohmann::json generic_plan_parameters() {
   const HandModel hand = load_hand("parallel_gripper");
   PlanDocument doc;
-  doc.planner = "generic";
+  doc.planner = PlannerKind::kGeneric;
   doc.params.seed = kPlanSeed;
   doc.params.quality.contact.mu = 0.5;
   return plan_to_json(doc, hand).at("parameters");

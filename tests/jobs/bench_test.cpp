@@ -63,7 +63,7 @@ BenchParams two_object_params() {
   BenchParams p;
   p.objects = {"a.obj", "b.obj"};
   p.hands = {"h1", "h2"};
-  p.planners = {"cord", "generic"};
+  p.planners = {PlannerKind::kCord, PlannerKind::kGeneric};
   p.repeats = 3;
   p.seed = 7;
   return p;
@@ -79,7 +79,7 @@ TEST(BenchAttempts, AreObjectMajorWithSeedPerRepeat) {
   EXPECT_EQ(attempts[0].object_path, "a.obj");
   EXPECT_EQ(attempts[11].object_path, "a.obj");
   EXPECT_EQ(attempts[12].object_path, "b.obj");
-  EXPECT_EQ(attempts[3].planner, "generic");
+  EXPECT_EQ(attempts[3].planner, PlannerKind::kGeneric);
   EXPECT_EQ(attempts[6].hand, "h2");
   EXPECT_EQ(attempts[2].repeat, 2);
 }

@@ -46,7 +46,7 @@ TEST(PlanJob, ContactModelIsThePlannersWithTheHandsPatchRadius) {
   const HandModel hand = load_hand("parallel_gripper");
   const std::string object = test::source_dir() + "/assets/objects/box.obj";
   PlanJobParams p;
-  p.planner = "generic";
+  p.planner = PlannerKind::kGeneric;
   p.plan.quality.contact.mu = 0.3;
   p.plan.time_limit_s = 2.0;
   const PlanDocument plan = plan_job(p, load_job_mesh(p, object), object, hand);
@@ -55,12 +55,11 @@ TEST(PlanJob, ContactModelIsThePlannersWithTheHandsPatchRadius) {
   EXPECT_FALSE(plan.cord.has_value());
 }
 
-TEST(PlanJob, RejectsAnUnknownPlanner) {
-  const HandModel hand = load_hand("parallel_gripper");
-  const std::string object = test::source_dir() + "/assets/objects/box.obj";
-  PlanJobParams p;
-  p.planner = "magic";
-  EXPECT_THROW(plan_job(p, load_job_mesh(p, object), object, hand), std::invalid_argument);
+TEST(PlannerKind, NamesRoundTripAndAnUnknownOneIsRefused) {
+  for (const PlannerKind k : {PlannerKind::kCord, PlannerKind::kGeneric})
+    EXPECT_EQ(parse_planner_kind(to_string(k)), k);
+  EXPECT_STREQ(to_string(PlannerKind::kCord), "cord");  // plan.json and scripts use the names
+  EXPECT_THROW(parse_planner_kind("magic"), std::invalid_argument);
 }
 
 }  // namespace

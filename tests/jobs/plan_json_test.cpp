@@ -30,7 +30,7 @@ PlanDocument sample_plan(const HandModel& hand) {
   doc.object_path = "/abs/box.obj";
   doc.object_name = "box";
   doc.object_triangles = 12;
-  doc.planner = "cord";
+  doc.planner = PlannerKind::kCord;
   doc.params.seed = 7;
   doc.params.quality.contact.mu = 0.7;
   doc.params.quality.contact.soft_finger_radius_m = 0.004;
@@ -81,7 +81,7 @@ TEST(PlanJson, RoundTripsEveryField) {
   EXPECT_EQ(plan_object_path(j), "/abs/box.obj");
   const PlanDocument back = plan_from_json(j, hand);
   EXPECT_EQ(back.hand_name, hand.name);
-  EXPECT_EQ(back.planner, "cord");
+  EXPECT_EQ(back.planner, PlannerKind::kCord);
   EXPECT_EQ(back.params.seed, 7u);
   EXPECT_EQ(plan_contact_model(back).mu, 0.7);
   EXPECT_EQ(plan_contact_model(back).soft_finger_radius_m, 0.004);
@@ -201,7 +201,7 @@ TEST(PlanJson, AnUnknownPlannerOrEnumNameIsAnError) {
 TEST(PlanJson, AGenericPlanHasNoCordParameters) {
   const HandModel hand = load_hand("parallel_gripper");
   PlanDocument doc = sample_plan(hand);
-  doc.planner = "generic";
+  doc.planner = PlannerKind::kGeneric;
   doc.cord.reset();
   const nlohmann::json j = plan_to_json(doc, hand);
   EXPECT_TRUE(j.at("parameters").at("cord").is_null());

@@ -44,9 +44,9 @@ std::string format(const char* fmt, ...) {
 
 void print_summary(const PlanDocument& doc, const HandModel& hand, const std::string& out) {
   const PlanStats& s = doc.stats;
-  std::cout << format("plan: %s planner, hand %s, object %s (%d triangles)\n", doc.planner.c_str(),
+  std::cout << format("plan: %s planner, hand %s, object %s (%d triangles)\n", to_string(doc.planner),
                       hand.name.c_str(), doc.object_name.c_str(), doc.object_triangles);
-  if (doc.planner == "cord")
+  if (doc.planner == PlannerKind::kCord)
     std::cout << format("  exploration %.3f s: %d regions, %d processed\n", s.exploration_s,
                         s.regions, s.regions_processed);
   std::cout << format(

@@ -130,9 +130,8 @@ CLI::Option* add_scale_option(CLI::App* cmd, double* scale, const std::string& e
 }
 
 void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
-  cmd->add_option("--planner", p.planner, "cord (Li et al. 2015) or generic (Simox baseline)")
-      ->check(one_of({"cord", "generic"}))
-      ->capture_default_str();
+  add_enum_option(cmd, "--planner", &p.planner,
+                  "cord (Li et al. 2015) or generic (Simox baseline)");
   cmd->add_option("--grasps,-n", p.plan.grasps, "Stop after this many force-closure grasps")
       ->check(whole_number_in(1, 10000))
       ->capture_default_str();

@@ -238,7 +238,7 @@ std::vector<BenchAttempt> bench_attempts(const BenchParams& params) {
   std::vector<BenchAttempt> out;
   for (const std::string& object : params.objects)
     for (const std::string& hand : params.hands)
-      for (const std::string& planner : params.planners)
+      for (const PlannerKind planner : params.planners)
         for (int r = 0; r < params.repeats; ++r) {
           BenchAttempt a;
           a.index = static_cast<int>(out.size());
@@ -506,7 +506,7 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
   row.object_path = attempt.object_path;
   row.object_scale = params.job.scale;
   row.hand = attempt.hand;
-  row.planner = attempt.planner;
+  row.planner = to_string(attempt.planner);
   row.repeat = attempt.repeat;
   row.seed = attempt.seed;
   try {
@@ -625,7 +625,11 @@ nlohmann::json bench_params_to_json(const BenchParams& p) {
   job.erase("planner");  // per attempt: "planners"
   return {{"hands", p.hands},
           {"objects", p.objects},
-          {"planners", p.planners},
+          {"planners", [&p] {
+             nlohmann::json names = nlohmann::json::array();
+             for (const PlannerKind k : p.planners) names.push_back(to_string(k));
+             return names;
+           }()},
           {"repeats", p.repeats},
           {"seed", p.seed},
           {"job", job},

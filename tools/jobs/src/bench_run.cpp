@@ -109,10 +109,13 @@ std::vector<std::string> write_contact_sheets(const std::vector<BenchResult>& re
 BenchRunOutcome run_bench(const BenchRunParams& opt, const BenchRunCallbacks& cb) {
   BenchParams params;
   params.hands = split_commas(opt.hands);
-  params.planners = split_commas(opt.planners);
-  for (const std::string& p : params.planners)
-    if (p != "cord" && p != "generic")
+  for (const std::string& p : split_commas(opt.planners)) {
+    try {
+      params.planners.push_back(parse_planner_kind(p));
+    } catch (const std::invalid_argument&) {
       throw InputError("bench: --planners: '" + p + "' is not cord or generic");
+    }
+  }
   params.objects = expand_object_args(opt.objects);
   params.repeats = opt.repeats;
   params.seed = opt.job.plan.seed;

@@ -53,7 +53,7 @@ std::string no_grasp_message(const std::string& who, const PlanDocument& doc, co
                     : s.attempt_budget_reached ? "--max-attempts budget used up"
                                                : "every grasp region tried";
   std::string text = who + ": no force-closure grasp of " + doc.object_name + " with " +
-                     doc.hand_name + " (" + doc.planner + " planner, " +
+                     doc.hand_name + " (" + to_string(doc.planner) + " planner, " +
                      std::to_string(s.attempts) + " attempts in " + fixed1(s.total_s) + " s, " +
                      why + "); try another --seed, --planner or a larger --max-attempts";
   const double diagonal_m = mesh_bounds(mesh).size().norm();
@@ -67,9 +67,6 @@ ContactModel plan_contact_model(const PlanDocument& plan) { return plan.params.q
 
 PlanDocument plan_document_for(const PlanJobParams& p, const Mesh& mesh,
                                const std::string& object_path, const HandModel& hand) {
-  if (p.planner != "cord" && p.planner != "generic")
-    throw std::invalid_argument("plan_job: unknown planner '" + p.planner +
-                                "' (allowed: cord, generic)");
   PlanParams params = p.plan;
   params.quality.contact.soft_finger_radius_m =
       p.soft_finger_radius_m.value_or(hand.soft_finger_radius_m);
@@ -88,7 +85,7 @@ PlanDocument plan_document_for(const PlanJobParams& p, const Mesh& mesh,
   doc.planner = p.planner;
   doc.params = params;
   doc.palm_width_m = palm_width(hand);
-  if (p.planner == "cord") {
+  if (p.planner == PlannerKind::kCord) {
     CordParams cord = p.cord;
     cord.seed = params.seed;
     cord.time_limit_s = params.time_limit_s;
@@ -102,7 +99,7 @@ PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::strin
   PlanDocument doc = plan_document_for(p, mesh, object_path, hand);
   auto collider = make_bullet_hand_collider(hand, mesh);
   PlanResult result;
-  if (p.planner == "cord")
+  if (p.planner == PlannerKind::kCord)
     result = plan_cord_grasps(mesh, hand, *collider, *doc.cord, doc.params, nullptr, cancel);
   else
     result = plan_generic_grasps(mesh, hand, *collider, doc.params, cancel);

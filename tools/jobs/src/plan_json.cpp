@@ -376,9 +376,6 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
     JsonReadArchive parameters(j.at("parameters"), source, "parameters");
     PlanParameters{&p}.Serialize(&parameters);
     parameters.reject_unknown_keys();
-    if (p.planner != "cord" && p.planner != "generic")
-      throw InputError(source + ": parameters.planner: unknown planner '" + p.planner +
-                       "' (allowed: cord, generic)");
     p.stats = stats_from_json(j.value("stats", nlohmann::json::object()));
     p.interrupted = read_interrupted(j, source);
     p.stats.interrupted = !p.interrupted.empty();

@@ -70,7 +70,7 @@ class CandidateSource {
     PlanParams params = doc_.params;
     params.grasps = 1;
     params.time_limit_s = time_left_s;
-    if (doc_.planner == "cord") {
+    if (doc_.planner == PlannerKind::kCord) {
       // Every region processed: explore again with the next seed (new regions), a few times.
       while (order_.empty() && explorations_ < kMaxExplorations) explore(time_left_s, stats);
       if (order_.empty()) return std::nullopt;

@@ -198,7 +198,7 @@ std::string run_render_hand(const RenderJobParams& opt, const Warn& /*warn*/) {
 // Empty, with a warning, when they cannot be rebuilt.
 std::vector<GraspRegion> replay_exploration(const PlanDocument& plan, const Mesh& mesh,
                                            const Warn& warn) {
-  if (plan.planner != "cord" || !plan.cord) return {};
+  if (plan.planner != PlannerKind::kCord || !plan.cord) return {};
   try {
     const CordParams& cord = *plan.cord;  // every field as planned
     std::vector<GraspRegion> regions = explore_cords(mesh, plan.palm_width_m, cord);
@@ -258,7 +258,7 @@ std::string run_render_plan(const RenderJobParams& opt, const Warn& warn) {
   overlay.friction_coefficient = plan_contact_model(plan).mu;
   overlay.cords = !opt.no_cords;
   overlay.p1 = opt.picture.view != "approach";
-  const std::string who = plan.object_name + " · " + plan.hand_name + " · " + plan.planner;
+  const std::string who = plan.object_name + " · " + plan.hand_name + " · " + to_string(plan.planner);
 
   Renderer renderer;
   std::vector<Image> tiles;

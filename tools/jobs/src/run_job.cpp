@@ -60,7 +60,7 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   ValidationParams validation = opt.validation;
   validation.tests = opt.tests;
   validation.protocol = opt.protocol;
-  progress("plan: " + opt.job.planner + " planner, hand " + hand.name + ", object " +
+  progress("plan: " + std::string(to_string(opt.job.planner)) + " planner, hand " + hand.name + ", object " +
                mesh->name + " (" + std::to_string(mesh->triangles.size()) + " triangles), " +
                std::to_string(opt.job.plan.grasps) +
                (validated ? " grasps that hold in physics within a budget of " +
@@ -215,7 +215,7 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
     }
     if (!tiles.empty()) {
       ContactSheetParams sheet;
-      sheet.title = mesh->name + " · " + hand.name + " · " + opt.job.planner + " planner · " +
+      sheet.title = mesh->name + " · " + hand.name + " · " + to_string(opt.job.planner) + " planner · " +
                     std::to_string(n) + " grasps";
       report.sheet = "grasps.png";
       write_png((fs::path(opt.out_dir) / report.sheet).string(),

@@ -31,7 +31,7 @@ std::string run_report_markdown(const RunReport& rep) {
   const PlanStats& s = plan.stats;
   std::ostringstream md;
   md << "# cordgrasp run: " << plan.object_name << " · " << plan.hand_name << " · "
-     << plan.planner << " planner\n\n";
+     << to_string(plan.planner) << " planner\n\n";
   md << "cordgrasp " << plan.cordgrasp_version << ". Files: `plan.json` (grasps), "
      << (rep.sim ? "`sim.json` (physics), " : "") << "PNG pictures, this report.\n\n";
   if (!rep.interrupted.empty())
@@ -42,7 +42,7 @@ std::string run_report_markdown(const RunReport& rep) {
   md << "- Object: `" << plan.object_path << "` (" << plan.object_triangles << " triangles, units "
      << plan.object_units << ", scale " << format_number(plan.object_scale) << ")\n";
   md << "- Hand: " << plan.hand_name << " (`" << plan.hand_path << "`)\n";
-  md << "- Planner: " << plan.planner << ", up to "
+  md << "- Planner: " << to_string(plan.planner) << ", up to "
      << plan.params.grasps << " grasps, at most " << plan.params.max_attempts
      << " attempts, time limit " << num(plan.params.time_limit_s) << " s, seed " << plan.params.seed << ", μ " << num(plan.params.quality.contact.mu)
      << ", soft-finger radius " << num(plan.params.quality.contact.soft_finger_radius_m)
@@ -95,7 +95,7 @@ std::string run_report_markdown(const RunReport& rep) {
   md << n << " force-closure grasp" << (n > 1 ? "s" : "") << " in " << num(s.total_s)
      << " s; the first after " << (s.first_force_closure_s ? num(*s.first_force_closure_s) : "–")
      << " s (" << s.attempts << " finger-stage attempts";
-  if (plan.planner == "cord") md << ", " << s.regions_processed << " of " << s.regions << " regions";
+  if (plan.planner == PlannerKind::kCord) md << ", " << s.regions_processed << " of " << s.regions << " regions";
   md << ").";
   if (rep.sim) {
     int held = 0;
@@ -146,7 +146,7 @@ std::string run_report_markdown(const RunReport& rep) {
         "of the grasp region (docs/algorithm.md §6).\n";
 
   md << "\n## Timings\n\n| stage | wall [s] |\n|---|---|\n";
-  if (plan.planner == "cord") md << "| cord exploration | " << num(s.exploration_s) << " |\n";
+  if (plan.planner == PlannerKind::kCord) md << "| cord exploration | " << num(s.exploration_s) << " |\n";
   md << "| finger stage | " << num(s.finger_s) << " |\n"
      << "| grasp quality | " << num(s.quality_s) << " |\n"
      << "| planning (total) | " << num(rep.plan_wall_s) << " |\n";

@@ -255,7 +255,7 @@ void bind_plan(py::module_& m) {
                              })
       .def_readonly("job_wall_s", &PyPlan::job_wall_s,
                     "Wall-clock time of the C++ plan job (0 for a plan read from a file) [s]")
-      .def_property_readonly("planner", [](const PyPlan& p) { return p.doc.planner; })
+      .def_property_readonly("planner", [](const PyPlan& p) { return std::string(to_string(p.doc.planner)); })
       .def_property_readonly(
           "interrupted",
           [](const PyPlan& p) -> py::object {
@@ -286,7 +286,7 @@ void bind_plan(py::module_& m) {
           py::arg("path"), "Writes plan.json (atomically).")
       .def("__len__", [](const PyPlan& p) { return p.doc.grasps.size(); })
       .def("__repr__", [](const PyPlan& p) {
-        return "<cordgrasp.Plan " + p.doc.planner + ", " + std::to_string(p.doc.grasps.size()) +
+        return "<cordgrasp.Plan " + std::string(to_string(p.doc.planner)) + ", " + std::to_string(p.doc.grasps.size()) +
                " grasps>";
       });
 

@@ -75,7 +75,7 @@ def test_generic_planner_and_bad_arguments(mug, hand):
     assert plan.planner == "generic" and plan.grasps[0].region_rank is None
     with pytest.raises(TypeError, match="unexpected keyword argument 'no_such'"):
         cordgrasp.plan(mug, hand, no_such=1)
-    with pytest.raises(ValueError, match="unknown planner 'x'"):
+    with pytest.raises(ValueError, match="planner: unknown name 'x'"):
         cordgrasp.plan(mug, hand, planner="x")
     with pytest.raises(ValueError, match="unknown name 'bogus'"):
         cordgrasp.plan(mug, hand, side_cord_policy="bogus")

@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "cordgrasp/core/finger_stage.h"
@@ -9,6 +10,18 @@
 #include "cordgrasp/core/grasp_quality.h"
 
 namespace cordgrasp {
+
+/// Which planner plans (docs/algorithm.md §10).
+enum class PlannerKind {
+  kCord,     ///< the cord planner of Li et al. 2015
+  kGeneric,  ///< the Simox-style generic baseline
+};
+
+/// "cord", "generic".
+const char* to_string(PlannerKind planner);
+
+/// Parses the names of to_string(PlannerKind). @throws std::invalid_argument otherwise.
+PlannerKind parse_planner_kind(const std::string& text);
 
 /// Parameters shared by the cord and the generic planner.
 struct PlanParams {

@@ -30,7 +30,7 @@ namespace cordgrasp {
 struct BenchParams {
   std::vector<std::string> hands;     ///< hand names or description files
   std::vector<std::string> objects;   ///< mesh files (directories already expanded)
-  std::vector<std::string> planners;  ///< cord and/or generic
+  std::vector<PlannerKind> planners;  ///< cord and/or generic
   int repeats = 1;                    ///< attempts per (object, hand, planner)
   std::uint64_t seed = 1;             ///< seed of repeat 0 (repeat r: seed + r)
   PlanJobParams job;                  ///< planner options (planner and seed set per attempt)
@@ -49,7 +49,7 @@ struct BenchAttempt {
   int index = 0;            ///< position in the full attempt list (bench_attempts)
   std::string object_path;  ///< as given (directories expanded)
   std::string hand;         ///< as given to --hands
-  std::string planner;      ///< cord or generic
+  PlannerKind planner = PlannerKind::kCord;
   int repeat = 0;           ///< 0-based
   std::uint64_t seed = 0;   ///< repeat_seed(params.seed, repeat)
 };

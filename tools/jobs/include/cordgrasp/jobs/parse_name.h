@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cordgrasp/core/cord_params.h"
+#include "cordgrasp/core/grasp_plan.h"
 #include "cordgrasp/core/grasp_quality.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/sim/sim_params.h"
@@ -13,6 +14,7 @@
 namespace cordgrasp {
 
 /// The enumerator named `text` (the enum's own parse_<enum>), by output type.
+inline void parse_name(const std::string& text, PlannerKind* e) { *e = parse_planner_kind(text); }
 inline void parse_name(const std::string& text, SideCordPolicy* e) {
   *e = parse_side_cord_policy(text);
 }

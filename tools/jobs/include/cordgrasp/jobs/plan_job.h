@@ -20,7 +20,7 @@ namespace cordgrasp {
 /// One planning job's parameters: the planner and its typed parameter structs (the CLI binds
 /// its options to these fields, so its help shows their defaults).
 struct PlanJobParams {
-  std::string planner = "cord";  ///< cord (Li et al. 2015) or generic (Simox-style baseline)
+  PlannerKind planner = PlannerKind::kCord;
   /// Shared planner parameters; plan.seed also seeds cord.seed and plan.quality.seed, and
   /// plan.time_limit_s caps cord.time_limit_s (plan_job sets both).
   PlanParams plan;

@@ -52,7 +52,7 @@ struct PlanDocument {
   std::string object_units = "m";  ///< as given to --units (m, mm or auto)
   double object_scale = 1.0;       ///< as given to --scale (applied after the units)
   int object_triangles = 0;
-  std::string planner = "cord";  ///< cord or generic
+  PlannerKind planner = PlannerKind::kCord;
   PlanParams params;             ///< as planned; params.quality.contact is the ContactModel
   double palm_width_m = 0.0;     ///< palm width of the hand (cord exploration) [m]
   std::optional<CordParams> cord;  ///< cord planner: exploration as run (seed, time limit)
