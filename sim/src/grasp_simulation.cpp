@@ -256,16 +256,7 @@ GraspSimulation::Impl::Impl(const Mesh& mesh, const HandModel& h, const Grasp& g
 
   // Hand.
   bullet::HandBodyParams hp;
-  hp.shapes.link_margin_m = params.link_margin_m;
-  hp.time_step_s = dt;
-  hp.default_effort_Nm = params.default_effort_Nm;
-  hp.default_effort_N = params.default_effort_N;
-  hp.effort_scale = params.effort_scale;
-  hp.gear_erp = params.gear_erp;
-  hp.base_mass_scale = params.base_mass_scale;
-  hp.armature_kgm2 = params.armature_kgm2;
-  hp.polyhedral_contacts = params.polyhedral_contacts;
-  hp.armature_kg = params.armature_kg;
+  hp.sim = params;
   if (params.lock_passive_joints) {
     // Joints no actor drives (abduction, opposition) stay at their planned values, as in the
     // planner's closing; mimic joints follow their master's fate.

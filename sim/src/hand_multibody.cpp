@@ -154,7 +154,7 @@ std::unique_ptr<HandMultiBody> make_hand_multibody(const HandModel& hand,
     inertia[static_cast<size_t>(b)] =
         body_inertia(hand, members[static_cast<size_t>(b)], X_RL,
                      bj >= 0 ? &hand.joints[static_cast<size_t>(bj)] : nullptr,
-                     params.armature_kgm2, params.armature_kg);
+                     params.sim.armature_kgm2, params.sim.armature_kg);
     for (int l : members[static_cast<size_t>(b)])
       out->X_CL[static_cast<size_t>(l)] =
           inertia[static_cast<size_t>(b)].X_RC.inverse() * X_RL[static_cast<size_t>(l)];
@@ -164,9 +164,9 @@ std::unique_ptr<HandMultiBody> make_hand_multibody(const HandModel& hand,
 
   // The multibody: floating base, one link per moving joint.
   const BodyInertia& base = inertia[0];
-  out->mb = std::make_unique<btMultiBody>(num_bodies - 1, base.mass * params.base_mass_scale,
+  out->mb = std::make_unique<btMultiBody>(num_bodies - 1, base.mass * params.sim.base_mass_scale,
                                           to_bt(Eigen::Vector3d(base.principal *
-                                                                params.base_mass_scale)),
+                                                                params.sim.base_mass_scale)),
                                           /*fixedBase=*/false, /*canSleep=*/false);
   out->mb->setHasSelfCollision(false);
   out->mb->setLinearDamping(0.0);
@@ -210,10 +210,10 @@ std::unique_ptr<HandMultiBody> make_hand_multibody(const HandModel& hand,
       links.push_back(&hand.links[static_cast<size_t>(l)]);
       X_CLs.push_back(out->X_CL[static_cast<size_t>(l)]);
     }
-    out->shapes[static_cast<size_t>(b)] = make_links_shape(links, X_CLs, params.shapes);
+    out->shapes[static_cast<size_t>(b)] = make_links_shape(links, X_CLs, ShapeParams{params.sim.link_margin_m});
     btCompoundShape* compound = out->shapes[static_cast<size_t>(b)].compound.get();
     if (!compound) continue;
-    if (params.polyhedral_contacts)
+    if (params.sim.polyhedral_contacts)
       for (auto& child : out->shapes[static_cast<size_t>(b)].children)
         if (child->isPolyhedral())
           static_cast<btPolyhedralConvexShape*>(child.get())->initializePolyhedralFeatures();
@@ -233,17 +233,17 @@ std::unique_ptr<HandMultiBody> make_hand_multibody(const HandModel& hand,
   }
 
   // Limits, servos (one per driven joint) and mimic gears.
-  const double dt = params.time_step_s;
+  const double dt = params.sim.time_step_s;
   out->effort_limit.assign(hand.joints.size(), 0.0);
   out->joint_motor.assign(hand.joints.size(), -1);
   for (size_t j = 0; j < hand.joints.size(); ++j) {
     const Joint& joint = hand.joints[j];
     const int i = out->joint_mb_link[j];
     if (i < 0) continue;
-    const double fallback =
-        joint.type == JointType::kPrismatic ? params.default_effort_N : params.default_effort_Nm;
+    const double fallback = joint.type == JointType::kPrismatic ? params.sim.default_effort_N
+                                                                 : params.sim.default_effort_Nm;
     out->effort_limit[j] =
-        params.effort_scale * (joint.effort_limit > 0.0 ? joint.effort_limit : fallback);
+        params.sim.effort_scale * (joint.effort_limit > 0.0 ? joint.effort_limit : fallback);
     if (joint.type != JointType::kContinuous && std::isfinite(joint.lower) &&
         std::isfinite(joint.upper)) {
       auto limit = std::make_unique<btMultiBodyJointLimitConstraint>(out->mb.get(), i,
@@ -265,7 +265,7 @@ std::unique_ptr<HandMultiBody> make_hand_multibody(const HandModel& hand,
           btMatrix3x3::getIdentity(), btMatrix3x3::getIdentity());
       gear->setGearRatio(-joint.mimic->multiplier);
       gear->setRelativePositionTarget(joint.mimic->offset);
-      gear->setErp(params.gear_erp);
+      gear->setErp(params.sim.gear_erp);
       gear->setMaxAppliedImpulse(params.constraint_max_force_N * dt);
       out->gears.push_back(std::move(gear));
       out->gear_joint.push_back(static_cast<int>(j));

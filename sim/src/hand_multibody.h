@@ -14,31 +14,20 @@
 #include <vector>
 
 #include "bullet_shapes.h"
+#include "cordgrasp/sim/sim_params.h"
 #include "cordgrasp/core/hand_model.h"
 
 namespace cordgrasp::bullet {
 
 /// How the hand multibody is built.
 struct HandBodyParams {
-  ShapeParams shapes;                ///< link margins (the planner's shapes)
-  double time_step_s = 1.0 / 240.0;  ///< motor impulse caps are effort × time step
-  double default_effort_Nm = 2.0;    ///< revolute joints without an effort limit [N·m]
-  double default_effort_N = 50.0;    ///< prismatic joints without an effort limit [N]
-  double effort_scale = 1.0;         ///< multiplies every effort limit
-  double gear_erp = 0.5;             ///< mimic gear constraints' error reduction
+  /// The simulation's settings the hand body is built from: link margin, time step (motor
+  /// impulse caps are effort × time step), default efforts and effort scale, gear ERP, base
+  /// mass scale, armature, polyhedral contacts.
+  SimParams sim;
   double constraint_max_force_N = 2000.0;  ///< force cap of joint limits and gears [N or N·m]
-  /// Base mass and inertia × this: the base is carried like a stiff arm's flange (its velocity
-  /// is commanded each step) and contacts barely deflect it.
-  double base_mass_scale = 1000.0;
   double link_friction = 1.0;        ///< Bullet friction of the links (× the object's)
-  /// Polyhedral link shapes (boxes, hulls) get Bullet's polyhedral features (SimParams).
-  bool polyhedral_contacts = false;
   bool pool_mimic_efforts = true;    ///< mimic joints' effort limits add to their master's
-  /// Reflected actuator inertia added to every moving joint's body: about the axis of a
-  /// revolute joint [kg·m²] ...
-  double armature_kgm2 = 0.0;
-  /// ... or as mass of a prismatic joint's body [kg].
-  double armature_kg = 0.0;
   /// Per HandModel joint (empty: none): lock this moving joint at `lock_values[j]`, i.e. build
   /// it as a fixed joint (merged into its parent body).
   std::vector<bool> locked;
