@@ -12,10 +12,10 @@ namespace {
 /// A one-grasp run whose grasp dropped while closing.
 struct DroppedInClose {
   PlanDocument plan;
-  SimDocument sim;
   RunReport report;
 
   explicit DroppedInClose(bool preshape_overlap) {
+    SimDocument sim;
     plan.grasps.resize(1);
     SimResult r;
     r.outcome = Outcome::kDropped;
@@ -30,7 +30,7 @@ struct DroppedInClose {
     sim.results = {r};
     sim.grasp_indices = {0};
     report.plan = plan;
-    report.sim = &sim;
+    report.sim = sim;
   }
 };
 
@@ -48,17 +48,17 @@ TEST(RunReport, PhysicsCellSaysWhenThePreshapeHandOverlapsTheCollisionShape) {
 
 TEST(RunReport, GraspRowGivesTheMotionWhileClosingAndTheFarthestPlannedContact) {
   DroppedInClose run(false);
-  PhaseResult& close = run.sim.results[0].phases[1];
+  PhaseResult& close = run.report.sim->results[0].phases[1];
   close.outcome = Outcome::kHeld;
   close.translation_m = 0.0021;
   close.rotation_rad = 0.05;  // 2.9°
-  run.sim.results[0].outcome = Outcome::kHeld;
-  run.sim.results[0].planned_contact_offsets_m = {0.0004, 0.0013};
+  run.report.sim->results[0].outcome = Outcome::kHeld;
+  run.report.sim->results[0].planned_contact_offsets_m = {0.0004, 0.0013};
   const std::string md = run_report_markdown(run.report);
   EXPECT_NE(md.find("closing: shift [mm], turn [°]"), std::string::npos) << md;
   EXPECT_NE(md.find("| 2.1, 2.9 | 1.3 |"), std::string::npos) << md;
   // A planned contact the object does not touch: no distance.
-  run.sim.results[0].planned_contact_offsets_m = {0.0004, std::nan("")};
+  run.report.sim->results[0].planned_contact_offsets_m = {0.0004, std::nan("")};
   EXPECT_NE(run_report_markdown(run.report).find("| 2.1, 2.9 | – |"), std::string::npos);
 }
 

@@ -71,7 +71,7 @@ void add_run_command(CLI::App& app) {
     std::cout << "run: " << out.report.plan.grasps.size() << " grasp(s) of "
               << out.report.plan.object_name << " with " << out.report.plan.hand_name;
     if (!out.sim_path.empty())
-      std::cout << ", " << out.held << " held through " << to_string(out.sim.tests);
+      std::cout << ", " << out.held << " held through " << to_string(out.report.sim->tests);
     if (const auto& v = out.report.plan.validation)
       std::cout << "\n  " << validation_stats_line(v->stats, out.report.plan.params.grasps);
     std::cout << "\n  report " << out.report_path << "\n";

@@ -36,199 +36,238 @@ bool pictured_phase(const std::string& phase) {
   return phase == "close" || phase == "lift" || phase == "shake";
 }
 
-}  // namespace
+/// A run's inputs, checked and loaded before any long stage, and its output files.
+struct RunInputs {
+  std::string object_path;
+  std::shared_ptr<const Mesh> mesh;
+  HandModel hand;
+  PictureOptions picture;
+  bool physics = false;  ///< tests other than "none"
+  SimTests tests;
+  std::string plan_path, report_path, sim_path;
+};
 
-RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
-  const auto progress = [&](const std::string& text) { if (say) say(text); };
-  RunOutcome out;
-  const bool physics = opt.tests != "none";
-  const SimTests tests = physics ? sim_tests_from_string(opt.tests) : SimTests{};
+/// Physics frames of each grasp (ends of close, lift, shake) for the pictures.
+using GraspFrames = std::vector<std::vector<SnapshotFrame>>;
+
+RunInputs load_run_inputs(const RunParams& opt) {
+  RunInputs in;
+  in.physics = opt.tests != "none";
+  in.tests = in.physics ? sim_tests_from_string(opt.tests) : SimTests{};
   // Check every input before the long stages: a bad size fails now, not after planning.
-  PictureOptions picture = opt.picture;
-  if (picture.view.empty()) picture.view = "iso";
-  parse_image_size(picture.size);
+  in.picture = opt.picture;
+  if (in.picture.view.empty()) in.picture.view = "iso";
+  parse_image_size(in.picture.size);
   if (fs::exists(opt.out_dir) && !fs::is_directory(opt.out_dir))
     throw InputError("run: --out-dir '" + opt.out_dir + "' exists and is not a directory");
-
-  const std::string object_path = resolve_object_path(opt.object);
-  const auto mesh = std::make_shared<const Mesh>(load_job_mesh(opt.job, object_path));
-  const HandModel hand = load_hand(opt.hand, opt.hand_load);
+  in.object_path = resolve_object_path(opt.object);
+  in.mesh = std::make_shared<const Mesh>(load_job_mesh(opt.job, in.object_path));
+  in.hand = load_hand(opt.hand, opt.hand_load);
   fs::create_directories(opt.out_dir);  // only once the inputs have loaded
+  in.plan_path = (fs::path(opt.out_dir) / "plan.json").string();
+  in.report_path = (fs::path(opt.out_dir) / "report.md").string();
+  in.sim_path = (fs::path(opt.out_dir) / "sim.json").string();
+  return in;
+}
 
-  // 1. Plan (validated: only grasps that hold in physics).
-  const bool validated = physics && opt.validate;
+/// 1. Plan (validated: only grasps that hold in physics) and write plan.json.
+void plan_stage(const RunParams& opt, const RunInputs& in, const RunProgress& progress,
+                RunReport* report) {
+  const bool validated = in.physics && opt.validate;
   ValidationParams validation = opt.validation;
   validation.tests = opt.tests;
   validation.protocol = opt.protocol;
-  progress("plan: " + std::string(to_string(opt.job.planner)) + " planner, hand " + hand.name + ", object " +
-               mesh->name + " (" + std::to_string(mesh->triangles.size()) + " triangles), " +
-               std::to_string(opt.job.plan.grasps) +
-               (validated ? " grasps that hold in physics within a budget of " +
-                                fixed(validation.budget_s, 0) + " s"
-                          : " grasps within " + fixed(opt.job.plan.time_limit_s, 0) + " s"));
-  auto t = Clock::now();
-  RunReport& report = out.report;
-  if (validated)
-    report.plan = plan_validated_grasps(opt.job, validation, *mesh, object_path, hand,
-                                        opt.jobs, progress, opt.cancel);
-  else
-    report.plan = plan_job(opt.job, *mesh, object_path, hand, opt.cancel);
-  report.plan_wall_s = seconds_since(t);
+  progress("plan: " + std::string(to_string(opt.job.planner)) + " planner, hand " +
+           in.hand.name + ", object " + in.mesh->name + " (" +
+           std::to_string(in.mesh->triangles.size()) + " triangles), " +
+           std::to_string(opt.job.plan.grasps) +
+           (validated ? " grasps that hold in physics within a budget of " +
+                            fixed(validation.budget_s, 0) + " s"
+                      : " grasps within " + fixed(opt.job.plan.time_limit_s, 0) + " s"));
+  const auto t = Clock::now();
+  report->plan = validated ? plan_validated_grasps(opt.job, validation, *in.mesh, in.object_path,
+                                                   in.hand, opt.jobs, progress, opt.cancel)
+                           : plan_job(opt.job, *in.mesh, in.object_path, in.hand, opt.cancel);
+  report->plan_wall_s = seconds_since(t);
+  write_plan_file(in.plan_path, report->plan, in.hand);
+}
+
+/// Throws NoGraspFound (after writing report.md) when the plan has no grasp.
+void require_grasps(const RunInputs& in, const RunReport& report) {
   const PlanDocument& plan = report.plan;
-  const std::string plan_path = (fs::path(opt.out_dir) / "plan.json").string();
-  const std::string report_path = (fs::path(opt.out_dir) / "report.md").string();
-  write_plan_file(plan_path, plan, hand);
-  out.plan_path = plan_path;
-  // Stopped early: report.md says where; the files written hold what finished.
-  const auto stop = [&](const std::string& reason, const std::string& at) {
+  if (!plan.grasps.empty()) return;
+  write_file_atomically(in.report_path, run_report_markdown(report));
+  if (plan.validation && plan.validation->stats.force_closure > 0)
+    throw NoGraspFound("run: no grasp of " + in.mesh->name + " with " + in.hand.name +
+                       " held in physics (" +
+                       validation_stats_line(plan.validation->stats, plan.params.grasps) +
+                       "); try a larger --budget, another --seed or --planner. Wrote " +
+                       in.plan_path + " and " + in.report_path);
+  throw NoGraspFound(no_grasp_message("run", plan, *in.mesh) + ". Wrote " + in.plan_path +
+                     " and " + in.report_path);
+}
+
+/// 2. Physics of the plan as written (poses as quaternions, so that `cordgrasp validate
+/// --plan plan.json` reproduces these outcomes exactly); writes sim.json and keeps the
+/// pictured phase ends in `frames`.
+SimDocument physics_stage(const RunParams& opt, const RunInputs& in, const RunProgress& progress,
+                          GraspFrames* frames, RunReport* report) {
+  const PlanDocument written = plan_from_json(read_plan_json(in.plan_path), in.hand,
+                                              in.plan_path);
+  PhysicsChoice choice;
+  choice.protocol = opt.protocol;
+  choice.overrides = opt.validation.physics;
+  choice.file = opt.validation.physics_file;
+  SimParams params = physics_settings(plan_contact_model(written), choice);
+  if (opt.validate) params.squeeze_shift_limit_m = opt.validation.squeeze_shift_limit_m;
+  const auto t = Clock::now();
+  const auto hooks = [&](int k) -> PhaseHook {
+    if (!opt.render) return {};
+    return [frames, k](const PhaseSnapshot& s) {
+      if (!s.phase_end || !pictured_phase(s.phase)) return;
+      SnapshotFrame f;
+      f.X_WL = s.X_WL;
+      f.X_WO = s.X_WO;
+      f.name = s.phase;
+      (*frames)[static_cast<size_t>(k)].push_back(std::move(f));
+    };
+  };
+  SimDocument sim = validate_plan(
+      written, in.hand, *in.mesh, params, in.tests, -1,
+      [&](int done, int total, const SimResult& r) {
+        progress("physics: grasp " + std::to_string(done) + "/" + std::to_string(total) + " " +
+                 sim_result_line(r));
+      },
+      hooks, opt.jobs, opt.cancel);
+  sim.plan_path = fs::absolute(in.plan_path).lexically_normal().string();
+  report->sim_wall_s = seconds_since(t);
+  write_sim_file(in.sim_path, sim, in.hand);
+  return sim;
+}
+
+/// Pictures of grasp k's physics frames as one strip.
+Image physics_strip(Renderer& renderer, const RunInputs& in, const RenderParams& params, int k,
+                    const SimResult& r, const std::vector<SnapshotFrame>& frames) {
+  Scene empty;
+  RenderParams snap = render_params(in.picture, empty);
+  snap.width_px = params.width_px / 2;
+  snap.height_px = params.height_px / 2;
+  std::vector<std::string> captions;
+  std::vector<SnapshotFrame> plain = frames;
+  for (SnapshotFrame& frame : plain) {
+    const PhaseResult* p = r.phase(frame.name);
+    captions.push_back("after " + frame.name +
+                       (p ? std::string(" · ") + to_string(p->outcome) : std::string()));
+    frame.caption.clear();
+  }
+  ContactSheetParams strip;
+  strip.columns = static_cast<int>(plain.size());
+  strip.title = in.mesh->name + " · " + in.hand.name + " · grasp " + std::to_string(k) +
+                " in Bullet: " + to_string(r.outcome);
+  return compose_contact_sheet(render_snapshots(renderer, in.hand, in.mesh, plain, snap),
+                               captions, strip);
+}
+
+/// 3. Pictures: each planned grasp (cords, contacts), its physics frames, a contact sheet.
+/// Returns the number of grasps pictured (fewer than planned when cancelled).
+int render_stage(const RunParams& opt, const RunInputs& in, const RunProgress& progress,
+                 const GraspFrames& frames, RunReport* report) {
+  const auto t = Clock::now();
+  const PlanDocument& plan = report->plan;
+  const int n = static_cast<int>(plan.grasps.size());
+  Renderer renderer;
+  const HandMeshes meshes = make_hand_meshes(in.hand);
+  OverlayStyle overlay;
+  overlay.friction_coefficient = opt.job.plan.quality.contact.mu;
+  std::vector<Image> tiles;
+  std::vector<std::string> captions;
+  int k = 0;
+  for (; k < n && !opt.cancel.cancelled(); ++k) {
+    const Grasp& g = plan.grasps[static_cast<size_t>(k)];
+    GraspPictures pics;
+    Scene scene =
+        grasp_scene(in.hand, meshes, in.mesh, g, g.region ? &*g.region : nullptr, overlay);
+    const std::string quality =
+        "α = " + fixed(g.alpha_rad, 3) + " rad · ε = " + fixed(g.epsilon, 4);
+    scene.caption = in.mesh->name + " · " + in.hand.name + " · grasp " + std::to_string(k) +
+                    " · " + quality;
+    const RenderParams params = render_params(in.picture, scene, g.X_OG.linear().col(2));
+    pics.planned = "grasp_" + std::to_string(k) + ".png";
+    write_png((fs::path(opt.out_dir) / pics.planned).string(), renderer.render(scene, params));
+    if (n > 1) {
+      scene.caption.clear();
+      tiles.push_back(renderer.render(scene, params));
+      captions.push_back("#" + std::to_string(k) + " · " + quality);
+    }
+    const auto& f = frames[static_cast<size_t>(k)];
+    if (!f.empty()) {
+      pics.snapshots.push_back("grasp_" + std::to_string(k) + "_physics.png");
+      write_png((fs::path(opt.out_dir) / pics.snapshots.back()).string(),
+                physics_strip(renderer, in, params, k,
+                              report->sim->results[static_cast<size_t>(k)], f));
+    }
+    report->pictures.push_back(pics);
+    progress("render: grasp " + std::to_string(k + 1) + "/" + std::to_string(n));
+  }
+  if (k == n && !tiles.empty()) {
+    ContactSheetParams sheet;
+    sheet.title = in.mesh->name + " · " + in.hand.name + " · " + to_string(opt.job.planner) +
+                  " planner · " + std::to_string(n) + " grasps";
+    report->sheet = "grasps.png";
+    write_png((fs::path(opt.out_dir) / report->sheet).string(),
+              compose_contact_sheet(tiles, captions, sheet));
+  }
+  report->render_wall_s = seconds_since(t);
+  return k;
+}
+
+}  // namespace
+
+RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
+  const RunProgress progress = [&](const std::string& text) { if (say) say(text); };
+  const RunInputs in = load_run_inputs(opt);
+  RunOutcome out;
+  RunReport& report = out.report;
+  // Writes report.md (stopped early: saying where) and returns what the run did.
+  const auto finish = [&](const std::string& reason, const std::string& at) {
     report.interrupted = reason;
     report.interrupted_at = at;
-    write_file_atomically(report_path, run_report_markdown(report));
-    for (const SimResult& r : out.sim.results) out.held += r.held();
-    out.report_path = report_path;
-    report.sim = nullptr;  // points into `out`, which moves on return
+    write_file_atomically(in.report_path, run_report_markdown(report));
+    if (report.sim)
+      for (const SimResult& r : report.sim->results) out.held += r.held();
+    out.report_path = in.report_path;
     return std::move(out);
   };
-  if (!plan.interrupted.empty())
-    return stop(plan.interrupted, "planning, after " + std::to_string(plan.grasps.size()) +
-                                      " of " + std::to_string(plan.params.grasps) + " grasps");
-  // Physics sees the plan as written (poses as quaternions), so `cordgrasp validate --plan
-  // plan.json` later reproduces these outcomes exactly.
-  const PlanDocument written = plan_from_json(read_plan_json(plan_path), hand, plan_path);
+
+  plan_stage(opt, in, progress, &report);
+  out.plan_path = in.plan_path;
+  const PlanDocument& plan = report.plan;
   const int n = static_cast<int>(plan.grasps.size());
-  if (plan.validation)
-    progress("plan: " + validation_stats_line(plan.validation->stats, plan.params.grasps));
-  else
-    progress("plan: " + std::to_string(n) + " force-closure grasp(s), " +
-             std::to_string(plan.stats.attempts) + " attempts");
-  if (n == 0 && plan.validation && plan.validation->stats.force_closure > 0) {
-    write_file_atomically(report_path, run_report_markdown(report));
-    throw NoGraspFound("run: no grasp of " + mesh->name + " with " + hand.name +
-                             " held in physics (" +
-                             validation_stats_line(plan.validation->stats, plan.params.grasps) +
-                             "); try a larger --budget, another --seed or --planner. Wrote " +
-                             plan_path + " and " + report_path);
-  }
-  if (n == 0) {
-    write_file_atomically(report_path, run_report_markdown(report));
-    throw NoGraspFound(no_grasp_message("run", plan, *mesh) + ". Wrote " + plan_path + " and " +
-                       report_path);
-  }
+  if (!plan.interrupted.empty())
+    return finish(plan.interrupted, "planning, after " + std::to_string(n) + " of " +
+                                        std::to_string(plan.params.grasps) + " grasps");
+  progress("plan: " + (plan.validation
+                           ? validation_stats_line(plan.validation->stats, plan.params.grasps)
+                           : std::to_string(n) + " force-closure grasp(s), " +
+                                 std::to_string(plan.stats.attempts) + " attempts"));
+  require_grasps(in, report);
 
-  // 2. Physics, keeping the world at the ends of close, lift and shake for the pictures.
-  SimDocument& sim = out.sim;
-  std::vector<std::vector<SnapshotFrame>> frames(static_cast<size_t>(n));
-  if (physics) {
-    PhysicsChoice choice;
-    choice.protocol = opt.protocol;
-    choice.overrides = opt.validation.physics;
-    choice.file = opt.validation.physics_file;
-    SimParams params = physics_settings(plan_contact_model(written), choice);
-    if (validated) params.squeeze_shift_limit_m = validation.squeeze_shift_limit_m;
-    t = Clock::now();
-    const auto hooks = [&](int k) -> PhaseHook {
-      if (!opt.render) return {};
-      return [&frames, k](const PhaseSnapshot& s) {
-        if (!s.phase_end || !pictured_phase(s.phase)) return;
-        SnapshotFrame f;
-        f.X_WL = s.X_WL;
-        f.X_WO = s.X_WO;
-        f.name = s.phase;
-        frames[static_cast<size_t>(k)].push_back(std::move(f));
-      };
-    };
-    sim = validate_plan(
-        written, hand, *mesh, params, tests, -1,
-        [&](int done, int total, const SimResult& r) {
-          progress("physics: grasp " + std::to_string(done) + "/" + std::to_string(total) +
-                       " " + sim_result_line(r));
-        },
-        hooks, opt.jobs, opt.cancel);
-    sim.plan_path = fs::absolute(plan_path).lexically_normal().string();
-    report.sim_wall_s = seconds_since(t);
-    out.sim_path = (fs::path(opt.out_dir) / "sim.json").string();
-    write_sim_file(out.sim_path, sim, hand);
-    report.sim = &sim;
-    if (!sim.interrupted.empty())
-      return stop(sim.interrupted, "physics, after " + std::to_string(sim.results.size()) +
-                                       " of " + std::to_string(n) + " grasps");
+  GraspFrames frames(static_cast<size_t>(n));
+  if (in.physics) {
+    report.sim = physics_stage(opt, in, progress, &frames, &report);
+    out.sim_path = in.sim_path;
+    if (!report.sim->interrupted.empty())
+      return finish(report.sim->interrupted,
+                    "physics, after " + std::to_string(report.sim->results.size()) + " of " +
+                        std::to_string(n) + " grasps");
   }
-
-  // 3. Pictures: each planned grasp (cords, contacts), its physics frames, a contact sheet.
-  if (!!opt.render) {
-    t = Clock::now();
-    Renderer renderer;
-    const HandMeshes meshes = make_hand_meshes(hand);
-    OverlayStyle overlay;
-    overlay.friction_coefficient = opt.job.plan.quality.contact.mu;
-    std::vector<Image> tiles;
-    std::vector<std::string> captions;
-    for (int k = 0; k < n; ++k) {
-      if (opt.cancel.cancelled()) {
-        report.render_wall_s = seconds_since(t);
-        return stop(opt.cancel.reason(), "rendering, after " + std::to_string(k) + " of " +
-                                             std::to_string(n) + " grasps");
-      }
-      const Grasp& g = plan.grasps[static_cast<size_t>(k)];
-      GraspPictures pics;
-      Scene scene = grasp_scene(hand, meshes, mesh, g, g.region ? &*g.region : nullptr, overlay);
-      const std::string quality =
-          "α = " + fixed(g.alpha_rad, 3) + " rad · ε = " + fixed(g.epsilon, 4);
-      scene.caption = mesh->name + " · " + hand.name + " · grasp " + std::to_string(k) + " · " +
-                      quality;
-      const RenderParams params = render_params(picture, scene, g.X_OG.linear().col(2));
-      Image image = renderer.render(scene, params);
-      pics.planned = "grasp_" + std::to_string(k) + ".png";
-      write_png((fs::path(opt.out_dir) / pics.planned).string(), image);
-      if (n > 1) {
-        scene.caption.clear();
-        tiles.push_back(renderer.render(scene, params));
-        captions.push_back("#" + std::to_string(k) + " · " + quality);
-      }
-      auto& f = frames[static_cast<size_t>(k)];
-      if (!f.empty()) {
-        const SimResult& r = sim.results[static_cast<size_t>(k)];
-        for (SnapshotFrame& frame : f) {
-          const PhaseResult* p = r.phase(frame.name);
-          frame.caption = "after " + frame.name + (p ? std::string(" · ") + to_string(p->outcome)
-                                                     : std::string());
-        }
-        Scene empty;
-        RenderParams snap = render_params(picture, empty);
-        snap.width_px = params.width_px / 2;
-        snap.height_px = params.height_px / 2;
-        std::vector<std::string> snap_captions;
-        for (const SnapshotFrame& frame : f) snap_captions.push_back(frame.caption);
-        std::vector<SnapshotFrame> plain = f;
-        for (SnapshotFrame& frame : plain) frame.caption.clear();
-        ContactSheetParams strip;
-        strip.columns = static_cast<int>(plain.size());
-        strip.title = mesh->name + " · " + hand.name + " · grasp " + std::to_string(k) +
-                      " in Bullet: " + to_string(r.outcome);
-        const Image sheet = compose_contact_sheet(
-            render_snapshots(renderer, hand, mesh, plain, snap), snap_captions, strip);
-        pics.snapshots.push_back("grasp_" + std::to_string(k) + "_physics.png");
-        write_png((fs::path(opt.out_dir) / pics.snapshots.back()).string(), sheet);
-      }
-      report.pictures.push_back(pics);
-      progress("render: grasp " + std::to_string(k + 1) + "/" + std::to_string(n));
-    }
-    if (!tiles.empty()) {
-      ContactSheetParams sheet;
-      sheet.title = mesh->name + " · " + hand.name + " · " + to_string(opt.job.planner) + " planner · " +
-                    std::to_string(n) + " grasps";
-      report.sheet = "grasps.png";
-      write_png((fs::path(opt.out_dir) / report.sheet).string(),
-                compose_contact_sheet(tiles, captions, sheet));
-    }
-    report.render_wall_s = seconds_since(t);
+  if (opt.render) {
+    const int pictured = render_stage(opt, in, progress, frames, &report);
+    if (pictured < n)
+      return finish(opt.cancel.reason(), "rendering, after " + std::to_string(pictured) +
+                                             " of " + std::to_string(n) + " grasps");
   }
-
-  write_file_atomically(report_path, run_report_markdown(report));
-  for (const SimResult& r : sim.results) out.held += r.held();
-  out.report_path = report_path;
-  report.sim = nullptr;  // points into `out`, which moves on return
-  return out;
+  return finish("", "");
 }
 
 }  // namespace cordgrasp

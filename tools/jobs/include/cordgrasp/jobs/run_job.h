@@ -40,8 +40,7 @@ struct RunParams {
 
 /// What run_job() wrote.
 struct RunOutcome {
-  RunReport report;            ///< report.plan holds the plan; report.sim is cleared
-  SimDocument sim;             ///< empty when tests == "none"
+  RunReport report;            ///< the plan, the physics (unset with tests "none"), pictures
   std::string plan_path, sim_path, report_path;  ///< files written ("" when not written)
   int held = 0;                ///< grasps held through the tests (the planned pose, once)
 };

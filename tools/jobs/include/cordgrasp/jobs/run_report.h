@@ -1,5 +1,6 @@
 #pragma once
 // report.md of `cordgrasp run`: a human summary of one plan → validate → render job.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,7 @@ struct GraspPictures {
 /// Everything report.md shows.
 struct RunReport {
   PlanDocument plan;
-  const SimDocument* sim = nullptr;    ///< nullptr when physics was skipped
+  std::optional<SimDocument> sim;      ///< unset when physics was skipped
   std::vector<GraspPictures> pictures; ///< one per grasp shown (may be empty: no rendering)
   std::string sheet;                   ///< contact sheet of all grasps ("" if none)
   double plan_wall_s = 0.0;
