@@ -648,9 +648,6 @@ TEST(ApplyProtocol, StandardIsTheDefaultAndThoroughTheLongProtocol) {
   const SimParams quick = sim_params_for(Protocol::kQuick);
   EXPECT_EQ(quick.time_step_s, 1.0 / 960.0);
   EXPECT_FALSE(quick.shake_all_axes_at_once);
-  const SimParams thorough = sim_params_for(Protocol::kThorough);
-  EXPECT_GT(thorough.lift_time_s, quick.lift_time_s);
-  EXPECT_FALSE(thorough.exit_on_failure);
   // Standard: the bounded close, quick's lift and exits, shake and rock along all axes at once.
   const SimParams standard = sim_params_for(Protocol::kStandard);
   EXPECT_EQ(standard.protocol, Protocol::kStandard);

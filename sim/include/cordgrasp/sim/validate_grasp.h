@@ -105,9 +105,8 @@ class GraspSimulation {
   PhaseResult settle();
   /// Close: reach — all driven joints follow minimum-jerk paths from the reach start to the plan,
   /// arriving together; squeeze — actor joints are driven past the plan (in the actors'
-  /// closing directions) until they
-  /// stall or squeeze_max_time_s, the others hold the plan. Sets the
-  /// reference pose of the object in the hand. No contact at the end = kDropped.
+  /// closing directions) until they stall or squeeze_max_time_s, the others hold the plan.
+  /// Sets the reference pose of the object in the hand. No contact at the end = kDropped.
   PhaseResult close();
   /// Lift: gravity −z_W; the hand rises lift_height_m in lift_time_s, then holds lift_hold_s
   /// (less with SimParams::rest_exit_time_s; early exits: SimParams::exit_on_failure).
