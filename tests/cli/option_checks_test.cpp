@@ -26,8 +26,6 @@ TEST(CliOptionChecks, BadNumbersAndSeedsAreRefusedByNameWithoutOutput) {
   const std::string plan = dir.file("missing_plan.json");  // the options fail before it is read
   const std::vector<BadOption> cases = {
       {"plan --mu nan", "--mu: nan is not a finite number in [0, 10]"},
-      {"plan --time-limit nan", "--time-limit: nan is not a finite number"},
-      {"plan --soft-finger-radius 10", "--soft-finger-radius: 10 is not a finite number"},
       {"plan --grasps 0", "--grasps: 0 is not a whole number"},
       {"plan --seed -1", "--seed: -1 is not a whole number in [0, 18446744073709551615]"},
       {"plan --seed 18446744073709551616", "--seed: 18446744073709551616 is not"},
@@ -35,8 +33,9 @@ TEST(CliOptionChecks, BadNumbersAndSeedsAreRefusedByNameWithoutOutput) {
       {"run --mu inf --out-dir " + dir.file("run"), "--mu: inf is not a finite number"},
       {"validate --plan " + plan + " --mu -1", "--mu: -1 is not a finite number"},
       {"validate --plan " + plan + " --mu nan", "--mu: nan is not a finite number"},
-      {"validate --plan " + plan + " --trial-turn 0.6", "--trial-turn: 0.6 is not"},
-      {"plan --validate --trial-turn 0.6", "--trial-turn: 0.6 is not"},  // one range
+      {"validate --plan " + plan + " --trials 0", "--trials: 0 is not a whole number in [1, 1000]"},
+      {"validate --plan " + plan + " --mass 0", "--mass: 0 is not a finite number in [1e-06, 10000]"},
+      {"plan --validate fast", "--validate: fast is not one of"},
       {"validate --plan " + plan + " --seed 2.5", "--seed: 2.5 is not a whole number"},
       {"explore --object box.obj --seed -3 --json", "--seed: -3 is not"},
   };

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "test_files.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
@@ -100,10 +101,41 @@ TEST(CliPlan, MissingObjectExitsNonZeroWithOneLine) {
   EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << r.output;
 }
 
-TEST(CliPlan, RejectsAnUnknownQualityMode) {
+TEST(CliPlan, SettingsFileSetsThePlannerAndTheOptionsGivenWin) {
+  const test::TempDir dir;
+  const std::string settings =
+      dir.write("settings.yaml", "planner: generic\nseed: 9\nmax_attempts: 77\n");
+  const std::string out = dir.file("plan.json");
+  const test::CommandResult r =
+      test::run_cordgrasp("plan --object " + quoted(shipped_object("box")) + " --settings " +
+                          quoted(settings) + " --seed 4 -q --out " + quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json p = test::read_json(out).at("parameters");
+  EXPECT_EQ(p.at("planner"), "generic");
+  EXPECT_EQ(p.at("max_attempts"), 77);
+  EXPECT_EQ(p.at("seed"), 4);  // the option, wherever it stands
+  // The plan as a settings file plans the same grasps again.
+  const std::string again = dir.file("again.json");
+  const test::CommandResult r2 = test::run_cordgrasp(
+      "plan --object " + quoted(shipped_object("box")) + " --settings " + quoted(out) +
+      " -q --out " + quoted(again));
+  ASSERT_EQ(r2.exit_code, 0) << r2.output;
+  const nlohmann::json a = test::read_json(out), b = test::read_json(again);
+  EXPECT_EQ(b.at("parameters"), a.at("parameters"));
+  ASSERT_EQ(b.at("grasps").size(), a.at("grasps").size());
+  for (size_t i = 0; i < a.at("grasps").size(); ++i)
+    EXPECT_EQ(b["grasps"][i]["hand_pose"], a["grasps"][i]["hand_pose"]) << i;
+}
+
+TEST(CliPlan, RejectsAnUnknownQualityModeNamingTheFileAndKey) {
+  const test::TempDir dir;
+  const std::string settings = dir.write("quality.yaml", "quality: {mode: ferrari}\n");
   const test::CommandResult r = test::run_cordgrasp(
-      "plan --object " + quoted(shipped_object("box")) + " --quality ferrari --out x.json");
+      "plan --object " + quoted(shipped_object("box")) + " --settings " + quoted(settings) +
+      " --out " + quoted(dir.file("x.json")));
   EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("quality.yaml': quality.mode: "), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.json")));
 }
 
 }  // namespace

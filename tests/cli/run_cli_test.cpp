@@ -22,14 +22,14 @@ using test::run_cordgrasp;
 using test::TempDir;
 
 constexpr int kGrasps = 2;
-constexpr unsigned kWidth_px = 160, kHeight_px = 120;
+constexpr unsigned kWidth_px = 800, kHeight_px = 600;  ///< run's picture size
 
 
 TEST(CliRun, DefaultsWritePlanSimReportAndPictures) {
   TempDir dir;
   // --no-validate keeps the CPU small; CliRun.ValidatesByDefault covers validated planning.
   const auto r = run_cordgrasp("run --grasps " + std::to_string(kGrasps) +
-                               " --no-validate --size 160x120 --quiet --out-dir " +
+                               " --no-validate --quiet --out-dir " +
                                quoted(dir.path.string()));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json plan = read_json(dir.file("plan.json"));
@@ -102,26 +102,34 @@ TEST(CliRun, ProgressGoesToStderrUnlessQuiet) {
 // to point contacts cannot find a grasp, so run must fail — yet keep plan and report.
 TEST(CliRun, NoGraspExitsNonZeroWithAClearMessageAndStillWritesTheReport) {
   TempDir dir;
-  const auto r = run_cordgrasp("run --hand parallel_gripper --soft-finger-radius 0 --object box "
-                               "--time-limit 1 --quiet --out-dir " + quoted(dir.path.string()));
+  const std::string settings = dir.write(
+      "point_contacts.yaml", "quality: {contact: {soft_finger_radius_m: 0}}\ntime_limit_s: 1\n");
+  const auto r = run_cordgrasp("run --hand parallel_gripper --settings " + quoted(settings) +
+                               " --object box --quiet --out-dir " +
+                               quoted((dir.path / "out").string()));
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("no force-closure grasp of box with parallel_gripper"),
             std::string::npos)
       << r.output;
-  EXPECT_EQ(read_json(dir.file("plan.json")).at("grasps").size(), 0u);
-  EXPECT_NE(read_text(dir.file("report.md")).find("No force-closure grasp"), std::string::npos);
-  EXPECT_FALSE(fs::exists(dir.file("sim.json")));
+  EXPECT_EQ(read_json(dir.file("out/plan.json")).at("grasps").size(), 0u);
+  EXPECT_NE(read_text(dir.file("out/report.md")).find("No force-closure grasp"),
+            std::string::npos);
+  EXPECT_FALSE(fs::exists(dir.file("out/sim.json")));
 }
 
 // The gripper's description carries a 5 mm pad patch, used by planner and physics alike.
 TEST(CliRun, GripperUsesItsHandsSoftFingerRadiusInPlanAndPhysics) {
   TempDir dir;
+  const std::string settings =
+      dir.write("generic.yaml", "planner: generic\ntime_limit_s: 5\n");
   const auto r = run_cordgrasp(
-      "run --hand parallel_gripper --object box --planner generic --grasps 1 --no-render "
-      "--tests lift --time-limit 5 --quiet --out-dir " + quoted(dir.path.string()));
+      "run --hand parallel_gripper --object box --settings " + quoted(settings) +
+      " --grasps 1 --no-render --tests lift --quiet --out-dir " +
+      quoted((dir.path / "out").string()));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const nlohmann::json plan = read_json(dir.file("plan.json"));
-  const nlohmann::json sim = read_json(dir.file("sim.json"));
+  const nlohmann::json plan = read_json(dir.file("out/plan.json"));
+  const nlohmann::json sim = read_json(dir.file("out/sim.json"));
+  EXPECT_EQ(plan["parameters"]["planner"], "generic");
   EXPECT_EQ(plan["parameters"]["quality"]["contact"]["soft_finger_radius_m"], 0.005);
   EXPECT_EQ(sim["parameters"]["contact"]["soft_finger_radius_m"], 0.005);
   EXPECT_EQ(plan["grasps"].size(), 1u);
@@ -146,13 +154,15 @@ TEST(CliRun, UnknownObjectNameIsOneLineErrorListingTheShippedOnes) {
 TEST(CliRun, MillimetreFileReadAsMetersIsWarnedAboutAndAutoReadsItAsMillimetres) {
   TempDir dir;
   const std::string box = quoted(test::test_data("meshes/box_100mm.obj"));
-  const std::string rest = " --tests none --no-render --time-limit 1 --quiet --out-dir " +
-                           quoted(dir.path.string());
-  const auto as_m = run_cordgrasp("run --object " + box + rest);
+  const std::string rest = " --tests none --no-render --quiet --out-dir " +
+                           quoted((dir.path / "out").string());
+  const std::string quick = quoted(dir.write("quick.yaml", "time_limit_s: 1\n"));
+  const std::string as_mm = quoted(dir.write("auto.yaml", "time_limit_s: 1\nunits: auto\n"));
+  const auto as_m = run_cordgrasp("run --object " + box + " --settings " + quick + rest);
   EXPECT_NE(as_m.output.find("m across: if the file is in millimetres, give --units mm"),
             std::string::npos)
       << as_m.output;
-  const auto as_auto = run_cordgrasp("run --units auto --object " + box + rest);
+  const auto as_auto = run_cordgrasp("run --settings " + as_mm + " --object " + box + rest);
   EXPECT_NE(as_auto.output.find("--units auto read the file as millimetres"), std::string::npos)
       << as_auto.output;
   EXPECT_EQ(as_auto.output.find("m across"), std::string::npos) << as_auto.output;

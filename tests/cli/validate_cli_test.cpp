@@ -10,11 +10,13 @@
 #include <string>
 #include <vector>
 
+#include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/sim/sim_params.h"
 #include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/sim_json.h"
+#include "cordgrasp/jobs/validate_job.h"
 #include "test_files.h"
 #include "test_paths.h"
 
@@ -187,8 +189,9 @@ TEST_F(ValidateCli, WritesSimJsonAndOneLinePerGraspAndATotal) {
 }
 
 TEST_F(ValidateCli, MuOverrideOfZeroDropsEveryGrasp) {
+  write_plan(plan_path(), 1);  // one grasp is enough here
   const auto r = run_cordgrasp("validate --plan " + plan_path() +
-                               " --tests lift --mu 0 --grasps 1 -q --protocol thorough --out " +
+                               " --tests lift --mu 0 -q --protocol thorough --out " +
                                out_path());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("held 0 / 1"), std::string::npos) << r.output;
@@ -208,11 +211,12 @@ TEST_F(ValidateCli, MuOverrideOfZeroDropsEveryGrasp) {
 }
 
 TEST_F(ValidateCli, CompliantContactsAndTheTimeStepComeFromAYamlPhysicsFile) {
+  write_plan(plan_path(), 1);  // one grasp is enough here
   const std::string file = (dir_ / "compliant.yaml").string();
   std::ofstream(file) << "# compliant contacts at 1/2000 s\ncontact_stiffness_Npm: 2e5\n"
                          "contact_damping_Nspm: 400\ntime_step_s: 0.0005\n";
   const auto r = run_cordgrasp("validate --plan " + plan_path() +
-                               " --tests lift --grasps 1 -q --physics " + file + " --out " +
+                               " --tests lift -q --physics " + file + " --out " +
                                out_path());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json sim = read_out();
@@ -222,7 +226,7 @@ TEST_F(ValidateCli, CompliantContactsAndTheTimeStepComeFromAYamlPhysicsFile) {
   EXPECT_EQ(sim["grasps"][0]["outcome"], "held");
   // More steps than the default step takes for the same lift.
   const auto default_run =
-      run_cordgrasp("validate --plan " + plan_path() + " --tests lift --grasps 1 -q --out " +
+      run_cordgrasp("validate --plan " + plan_path() + " --tests lift -q --out " +
                     out_path());
   ASSERT_EQ(default_run.exit_code, 0) << default_run.output;
   const nlohmann::json def = read_out();
@@ -232,11 +236,12 @@ TEST_F(ValidateCli, CompliantContactsAndTheTimeStepComeFromAYamlPhysicsFile) {
 }
 
 TEST_F(ValidateCli, PhysicsFileFieldsOverrideThePresetAndAreRecordedInSimJson) {
+  write_plan(plan_path(), 1);  // one grasp is enough here
   const std::string file = (dir_ / "phases.json").string();
   std::ofstream(file) << R"({"shake_all_axes_at_once": true, "rock_frequency_hz": 2,
       "rock_time_s": 0.5, "shake_time_s": 0.5, "lift_hold_s": 0.2, "rest_exit_time_s": 0.05})";
   const auto r = run_cordgrasp("validate --plan " + plan_path() +
-                               " --tests lift,shake --grasps 1 -q --protocol thorough --physics " +
+                               " --tests lift,shake -q --protocol thorough --physics " +
                                file + " --out " + out_path());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json sim = read_out();
@@ -254,6 +259,7 @@ TEST_F(ValidateCli, PhysicsFileFieldsOverrideThePresetAndAreRecordedInSimJson) {
 }
 
 TEST_F(ValidateCli, PrintPhysicsPrintsTheEffectiveSettingsAsAFileThatReadsBack) {
+  write_plan(plan_path(), 1);  // one grasp is enough here
   const std::string file = (dir_ / "in.json").string();
   std::ofstream(file) << R"({"solver_iterations": 30})";
   const auto r = run_cordgrasp("validate --plan " + plan_path() + " --protocol quick --mu 0.7" +
@@ -264,7 +270,7 @@ TEST_F(ValidateCli, PrintPhysicsPrintsTheEffectiveSettingsAsAFileThatReadsBack) 
   const std::string printed = (dir_ / "printed.yaml").string();
   std::ofstream(printed) << r.output;
   // Read back over another preset: every field is the printed one.
-  const auto back = run_cordgrasp("validate --plan " + plan_path() + " --tests lift --grasps 1" +
+  const auto back = run_cordgrasp("validate --plan " + plan_path() + " --tests lift" +
                                   " -q --physics " + printed + " --out " + out_path());
   ASSERT_EQ(back.exit_code, 0) << back.output;
   const nlohmann::json p = read_out()["parameters"];
@@ -297,9 +303,10 @@ TEST_F(ValidateCli, PhysicsFileFromAnEarlierSimJsonRepeatsItsRunExactly) {
 }
 
 TEST_F(ValidateCli, PhysicsFileSetsTheFieldsItNamesAndRejectsUnknownOnes) {
+  write_plan(plan_path(), 1);  // one grasp is enough here
   const std::string file = (dir_ / "physics.json").string();
   std::ofstream(file) << R"({"squeeze_travel_m": 0.002, "decomposition": {"max_hull_vertices": 32}})";
-  const auto r = run_cordgrasp("validate --plan " + plan_path() + " --tests lift --grasps 1 -q" +
+  const auto r = run_cordgrasp("validate --plan " + plan_path() + " --tests lift -q" +
                                " --physics " + file + " --out " + out_path());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json p = read_out()["parameters"];
@@ -334,11 +341,12 @@ TEST_F(ValidateCli, PhysicsFileSetsTheFieldsItNamesAndRejectsUnknownOnes) {
 }
 
 TEST_F(ValidateCli, TraceWritesTheObjectInTheHandThroughEveryPhaseAsCsv) {
+  write_plan(plan_path(), 1);  // one grasp is enough here
   const std::string trace = (dir_ / "trace.csv").string();
   const std::string every = (dir_ / "every.json").string();
   std::ofstream(every) << R"({"trace_interval_s": 0.5})";
   const auto r = run_cordgrasp("validate --plan " + plan_path() +
-                               " --tests lift --grasps 1 -q --protocol thorough --trace " + trace +
+                               " --tests lift -q --protocol thorough --trace " + trace +
                                " --physics " + every + " --out " + out_path());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::ifstream in(trace);
@@ -367,20 +375,30 @@ TEST_F(ValidateCli, TraceIntoAMissingFolderFailsBeforeSimulating) {
 
 TEST_F(ValidateCli, LeverOptionsAreGoneIntoThePhysicsFile) {
   // Experiments are settings files; the command line keeps what a user needs.
-  for (const std::string option : {"--time-step 0.001", "--squeeze-direction contacts",
-                                   "--object-fixed close", "--hull-vertices 32", "--warmstart"})
+  for (const std::string option :
+       {"--time-step 0.001", "--squeeze-direction contacts", "--object-fixed close",
+        "--hull-vertices 32", "--warmstart", "--trial-offset 0.001", "--density 500",
+        "--cache-dir /tmp", "--grasps 1"})
     expect_error(option, option.substr(0, option.find(' ')));
 }
 
 TEST_F(ValidateCli, TrialsRepeatEachGraspWithTheHandNudgedAndShowAPointContactPinchIsFragile) {
-  const std::string cmd = "validate --plan " + plan_path() +
-                          " --tests lift --grasps 1 -q --trials 3 --trial-offset 0.001"
-                          " --protocol thorough --out " +
-                          out_path();
-  const auto r = run_cordgrasp(cmd);
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("grasp 0: held in "), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find(" / 3 trials of all grasps"), std::string::npos) << r.output;
+  // The nudge is 1 mm here: validate_job's perturbation (the command line keeps the default).
+  write_plan(plan_path(), 1);
+  ValidateJobParams p;
+  p.plan = plan_path();
+  p.tests = "lift";
+  p.trials = 3;
+  p.perturbation.offset_m = 0.001;
+  p.protocol = Protocol::kThorough;
+  p.out = out_path();
+  std::string lines;
+  ValidateJobCallbacks cb;
+  cb.grasp_line = [&lines](const std::string& line) { lines += line + "\n"; };
+  const auto run = [&] { return validate_job(p, cb); };
+  const SimDocument doc = run();
+  EXPECT_NE(lines.find("grasp 0: held in "), std::string::npos) << lines;
+  EXPECT_EQ(doc.results.size(), 1u);
   const nlohmann::json sim = read_out();
   const auto& trials = sim["grasps"][0]["trials"];
   ASSERT_EQ(trials["count"], 3);
@@ -406,7 +424,7 @@ TEST_F(ValidateCli, TrialsRepeatEachGraspWithTheHandNudgedAndShowAPointContactPi
   EXPECT_EQ(trials["outcomes"][0], "held");
   EXPECT_LT(trials["held"].get<int>(), 3) << trials.dump();
   // Same seed, same trials.
-  ASSERT_EQ(run_cordgrasp(cmd).exit_code, 0);
+  run();
   EXPECT_EQ(read_out()["grasps"][0]["trials"], trials);
 }
 
@@ -430,20 +448,42 @@ TEST_F(ValidateCli, SnapshotsIntoAMissingFolderIsAnErrorBeforeSimulating) {
   expect_error("--snapshots " + (dir_ / "nowhere").string(), "--snapshots");
 }
 
-TEST_F(ValidateCli, PlanForAnotherHandIsAnError) {
-  expect_error("--hand cordgrasp_sah", "made for hand 'parallel_gripper'");
-}
-
-TEST_F(ValidateCli, PlanForAnotherObjectIsAnError) {
-  expect_error("--object " + source_dir() + "/assets/objects/mug.obj", "was planned for object");
-}
-
-TEST_F(ValidateCli, SameObjectGivenExplicitlyIsAccepted) {
-  const auto r = run_cordgrasp("validate --plan " + plan_path() + " --object " + box_path() +
-                               " --hand parallel_gripper --tests lift --grasps 1 -q --out " +
-                               out_path());
-  EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_EQ(read_out()["summary"]["grasps"], 1);
+// validate_job's hand and object, for a plan whose files moved: they must be the plan's.
+TEST_F(ValidateCli, PlanForAnotherHandOrObjectIsAnErrorAndTheSameObjectIsAccepted) {
+  ValidateJobParams p;
+  p.plan = plan_path();
+  p.tests = "lift";
+  p.out = out_path();
+  p.hand = "cordgrasp_sah";
+  EXPECT_THROW(
+      {
+        try {
+          validate_job(p);
+        } catch (const InputError& e) {
+          EXPECT_NE(std::string(e.what()).find("made for hand 'parallel_gripper'"),
+                    std::string::npos)
+              << e.what();
+          throw;
+        }
+      },
+      InputError);
+  p.hand = "parallel_gripper";
+  p.object = source_dir() + "/assets/objects/mug.obj";
+  EXPECT_THROW(
+      {
+        try {
+          validate_job(p);
+        } catch (const InputError& e) {
+          EXPECT_NE(std::string(e.what()).find("was planned for object"), std::string::npos)
+              << e.what();
+          throw;
+        }
+      },
+      InputError);
+  EXPECT_FALSE(std::filesystem::exists(out_path()));
+  p.object = box_path();
+  EXPECT_EQ(validate_job(p).results.size(), 2u);
+  EXPECT_EQ(read_out()["summary"]["grasps"], 2);
 }
 
 TEST_F(ValidateCli, UnknownTestOrMissingPlanIsAnError) {

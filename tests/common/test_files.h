@@ -32,6 +32,11 @@ struct TempDir {
   TempDir& operator=(const TempDir&) = delete;
   /// path / name as a string.
   std::string file(const std::string& name) const { return (path / name).string(); }
+  /// Writes `text` to path / name (a settings file, say); returns its path.
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path / name) << text;
+    return file(name);
+  }
 };
 
 /// The file's JSON; throws (the test fails) when it is missing or not JSON.

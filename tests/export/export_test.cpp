@@ -84,7 +84,7 @@ void export_all_formats(const std::string& hand) {
   const TempDir dir(hand);
   const fs::path plan = dir.path / "plan.json";
   const test::CommandResult planned = test::run_cordgrasp(
-      "plan --hand " + hand + " --object box -n 2 --time-limit 30 --out " + plan.string());
+      "plan --hand " + hand + " --object box -n 2 --out " + plan.string());
   ASSERT_EQ(planned.exit_code, 0) << planned.output;
   const nlohmann::json plan_json = nlohmann::json::parse(read_text(plan));
   const size_t n = plan_json["grasps"].size();

@@ -37,7 +37,7 @@ class StandardCheck : public ::testing::Test {
     fs::create_directories(*dir_);
     const std::string plan = (*dir_ / "plan.json").string();
     const test::CommandResult planned = test::run_cordgrasp(
-        "plan --hand cordgrasp_sah --object mug -n 3 --time-limit 30 --out " + plan);
+        "plan --hand cordgrasp_sah --object mug -n 3 --out " + plan);
     ASSERT_EQ(planned.exit_code, 0) << planned.output;
     const test::CommandResult exported = test::run_cordgrasp(
         "export --plan " + plan + " --format mjcf --out " + (*dir_ / "scene.xml").string());

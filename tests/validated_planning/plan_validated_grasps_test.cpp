@@ -18,6 +18,7 @@
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/jobs/plan_json.h"
+#include "cordgrasp/jobs/validate_job.h"
 #include "cordgrasp/jobs/validate_plan.h"
 #include "test_paths.h"
 
@@ -176,25 +177,32 @@ TEST(PlanValidatedGrasps, ValidatingThePlanAgainTestsTheObjectItWasAcceptedWith)
   const std::string dir = temp_dir("overrides");
   const std::string plan_path = dir + "/plan.json";
   write_plan_file(plan_path, plan, box.hand);
-  const auto validate = [&](const std::string& options) {
-    const auto r = test::run_cordgrasp("validate --plan '" + plan_path + "' --tests lift " +
-                                       options + " --out '" + dir + "/sim.json'");
-    EXPECT_EQ(r.exit_code, 0) << r.output;
+  const auto validate = [&](const SimOverrides& overrides) {
+    ValidateJobParams p;  // validate --plan; the density and squeeze weight: library only
+    p.plan = plan_path;
+    p.tests = "lift";
+    p.physics = overrides;
+    p.out = dir + "/sim.json";
+    validate_job(p);
     std::ifstream in(dir + "/sim.json");
     return nlohmann::json::parse(in);
   };
   // Nothing given: the plan's record.
-  nlohmann::json sim = validate("");
+  nlohmann::json sim = validate({});
   EXPECT_DOUBLE_EQ(sim.at("object").at("mass_kg").get<double>(), kMass_kg);
   EXPECT_DOUBLE_EQ(sim.at("parameters").at("squeeze_weight_factor").get<double>(),
                    kSqueezeWeight);
   // A density given replaces the recorded mass (one choice of weight); the factor stays.
-  sim = validate("--density " + std::to_string(kDensity_kgm3));
+  SimOverrides density;
+  density.density_kgm3 = kDensity_kgm3;
+  sim = validate(density);
   EXPECT_NEAR(sim.at("object").at("mass_kg").get<double>(), kDensity_kgm3 * kBoxVolume_m3,
               1e-3 * kDensity_kgm3 * kBoxVolume_m3);
   EXPECT_DOUBLE_EQ(sim.at("parameters").at("squeeze_weight_factor").get<double>(),
                    kSqueezeWeight);
-  sim = validate("--squeeze-weight 0");
+  SimOverrides weight;
+  weight.squeeze_weight_factor = 0.0;
+  sim = validate(weight);
   EXPECT_DOUBLE_EQ(sim.at("parameters").at("squeeze_weight_factor").get<double>(), 0.0);
   EXPECT_DOUBLE_EQ(sim.at("object").at("mass_kg").get<double>(), kMass_kg);
   std::filesystem::remove_all(dir);

@@ -84,7 +84,7 @@ void add_bench_command(CLI::App& app) {
       ->check(whole_number_in(1, 100000))
       ->capture_default_str();
   add_plan_job_options(cmd, opt->bench.job);
-  cmd->remove_option(cmd->get_option("--planner"));  // --planners instead
+  add_planner_tuning_options(cmd, opt->bench.job);
   cmd->add_option("--tests", opt->bench.tests,
                   "Physics tests on each attempt's first grasp: lift,shake,gravity6 subset, or "
                   "none")

@@ -22,7 +22,6 @@ namespace {
 
 struct PlanOptions {
   std::string hand = default_hand_name();
-  HandLoadOptions hand_load;
   std::string object;
   PlanJobParams job;
   std::string out;
@@ -85,7 +84,7 @@ void run_plan(const PlanOptions& opt) {
   const CancelToken cancel = interrupt_token();
   const std::string object_path = resolve_object_path(opt.object);
   const Mesh mesh = load_job_mesh(opt.job, object_path);
-  const HandModel hand = load_hand(opt.hand, opt.hand_load);
+  const HandModel hand = load_hand(opt.hand);
   PlanDocument doc;
   if (opt.validate) {
     doc = plan_validated_grasps(opt.job, opt.validation, mesh, object_path, hand, opt.jobs,
@@ -117,20 +116,34 @@ void add_plan_command(CLI::App& app) {
       "plan", "Plan force-closure grasps with the cord planner (or the generic baseline)");
   cmd->add_option("--hand", opt->hand, "Hand description file or shipped hand name")
       ->capture_default_str();
-  add_package_path_option(cmd, opt->hand_load);
   cmd->add_option("--object,-o", opt->object, "Object mesh file or shipped object name")->required();
+  add_planner_option(cmd, opt->job);
   add_plan_job_options(cmd, opt->job);
-  cmd->add_flag("--validate", opt->validate,
-                "Keep only grasps that hold in physics (force-closure candidates, best first, "
-                "until --grasps are accepted or --budget is spent)");
-  cmd->add_option("--tests", opt->validation.tests,
-                  "--validate: physics tests, any of lift,shake,gravity6")
-      ->check(physics_tests(false))
-      ->capture_default_str();
-  add_enum_option(cmd, "--protocol", &opt->validation.protocol,
-                  std::string("--validate: ") + kProtocolHelp);
-  add_validation_options(cmd, opt->validation);
-  add_sim_override_options(cmd, opt->validation.physics);
+  add_units_option(cmd, opt->job);
+  add_plan_settings_option(cmd, opt->job, opt->validation);
+  auto* validate = opt.get();
+  cmd->add_option_function<std::string>(
+         "--validate",
+         [validate](const std::string& protocol) {
+           validate->validate = true;
+           if (!protocol.empty()) parse_name(protocol, &validate->validation.protocol);
+         },
+         std::string("[PROTOCOL] Keep only grasps that hold in physics under PROTOCOL (default ") +
+             to_string(opt->validation.protocol) +
+             "): force-closure candidates, best first, until --grasps are accepted or the "
+             "settings' validation.budget_s is spent. " + kProtocolHelp)
+      ->expected(0, 1)
+      ->check([](const std::string& text) {
+        Protocol protocol{};
+        try {
+          parse_name(text, &protocol);
+        } catch (const std::invalid_argument& e) {
+          return enum_refusal(text, e.what());
+        }
+        return std::string();
+      });
+  cmd->add_option("--physics", opt->validation.physics_file,
+                  std::string("--validate: ") + kPhysicsHelp);
   cmd->add_option("--jobs,-j", opt->jobs,
                   "--validate: trials simulated at once, one physics world per thread")
       ->check(whole_number_in(1, 256))

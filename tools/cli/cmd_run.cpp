@@ -32,26 +32,25 @@ void add_run_command(CLI::App& app) {
              "write plan.json, sim.json, PNGs and report.md");
   cmd->add_option("--hand", opt->run.hand, "Hand description file or shipped hand name")
       ->capture_default_str();
-  add_package_path_option(cmd, opt->run.hand_load);
   cmd->add_option("--object,-o", opt->run.object, "Object mesh file or shipped object name")
       ->capture_default_str();
   add_plan_job_options(cmd, opt->run.job);
+  add_plan_settings_option(cmd, opt->run.job, opt->run.validation);
+  add_enum_option(cmd, "--protocol", &opt->run.protocol, kProtocolHelp);
+  cmd->add_option("--physics", opt->run.validation.physics_file, kPhysicsHelp);
   cmd->add_option("--tests", opt->run.tests,
-                  "Physics tests: any of lift,shake,gravity6, or none")
+                  "Physics tests: any of lift,shake,gravity6, or none (plan force-closure "
+                  "grasps only)")
+      ->check(physics_tests(true))
       ->capture_default_str();
-  add_enum_option(cmd, "--protocol", &opt->run.protocol,
-                  kProtocolHelp);
   cmd->add_option("--jobs,-j", opt->run.jobs,
                   "Grasps simulated at once, one physics world per thread (same results)")
       ->check(whole_number_in(1, 256))
       ->capture_default_str();
   cmd->add_flag("--no-validate", opt->no_validate,
                 "Plan force-closure grasps only and validate them afterwards (default: keep "
-                "only grasps held in --min-held of --trials physics trials)");
-  add_validation_options(cmd, opt->run.validation);
-  add_sim_override_options(cmd, opt->run.validation.physics);
-  cmd->add_option("--size", opt->run.picture.size, "Picture size WxH [px]")
-      ->capture_default_str();
+                "only grasps that hold in the settings' validation.min_held of "
+                "validation.trials physics trials)");
   cmd->add_flag("--no-render", opt->no_render, "No pictures");
   cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
   cmd->add_option("--out-dir", opt->run.out_dir, "Output folder (created if missing)")

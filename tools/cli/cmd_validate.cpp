@@ -26,46 +26,33 @@ void add_validate_command(CLI::App& app) {
       app.add_subcommand("validate", "Check planned grasps in Bullet physics (lift, shake, "
                                      "gravity in six directions)");
   cmd->add_option("--plan", opt->job.plan, "plan.json written by `cordgrasp plan`")->required();
-  cmd->add_option("--hand", opt->job.hand,
-                  "Hand (default: the plan's); a plan for another hand is an error");
-  add_package_path_option(cmd, opt->job.hand_load);
-  cmd->add_option("--object,-o", opt->job.object,
-                  "Object mesh file or shipped object name (default: the plan's); another "
-                  "object is an error");
-  cmd->add_option("--units", opt->job.units, "Units of --object: m, mm or auto (default: the plan's)")
-      ->check(one_of({"m", "mm", "auto"}));
-  cmd->add_option_function<double>(
-         "--scale", [opt](double s) { opt->job.scale = s; },
-         "Scale of --object after --units (default: the plan's)")
-      ->check(number_in(1e-6, 1000.0));
   cmd->add_option("--tests", opt->job.tests, "Tests to run after closing: lift,shake,gravity6")
       ->check(physics_tests(false))
       ->capture_default_str();
   add_enum_option(cmd, "--protocol", &opt->job.protocol,
                   kProtocolHelp);
   cmd->add_option("--mu", opt->job.mu, "Friction coefficient (default: the plan's μ)")
-      ->check(number_in(0.0, 10.0));
-  add_sim_override_options(cmd, opt->job.physics, "the plan's validation record's, else ");
+      ->check(settings_number("quality.contact.mu"));
+  cmd->add_option("--mass", opt->job.physics.mass_kg,
+                  "Object mass [kg] (default: the plan's validation record's, else from the "
+                  "volume, docs/physics.md §2)")
+      ->check(settings_number("validation.physics.mass_kg"));
   cmd->add_option("--physics", opt->job.physics_file, kPhysicsHelp);
   cmd->add_flag("--print-physics", opt->print_physics,
                 "Print the settings this command would simulate with (YAML, a --physics file) "
                 "and exit");
-  cmd->add_option("--cache-dir", opt->job.cache_dir,
-                  "Directory caching convex decompositions on disk (by mesh hash)");
   cmd->add_option("--jobs,-j", opt->job.jobs,
                   "Grasps (and trials) simulated at once, one physics world per thread; the "
                   "results do not depend on it (--snapshots runs one at a time)")
       ->check(whole_number_in(1, 256))
       ->capture_default_str();
-  cmd->add_option("--grasps", opt->job.grasps, "Validate only the first K grasps of the plan")
-      ->check(whole_number_in(1, 100000));
   cmd->add_option("--trials", opt->job.trials,
-                  "Simulate each grasp N times: as planned, then with the hand moved by "
-                  "--trial-offset and turned by --trial-turn (held / not-held of marginal "
-                  "grasps is chaotic; docs/physics.md)")
-      ->check(whole_number_in(1, 1000))
+                  "Simulate each grasp N times: as planned, then with the hand moved by " +
+                      format_number(1e3 * PerturbationParams{}.offset_m) + " mm and turned by " +
+                      format_number(1e3 * PerturbationParams{}.turn_rad) +
+                      " mrad (held / not-held of marginal grasps is chaotic; docs/physics.md)")
+      ->check(settings_whole_number("validation.trials"))
       ->capture_default_str();
-  add_trial_nudge_options(cmd, opt->job.perturbation);
   cmd->add_option("--seed", opt->job.seed, "Seed of the trials' random directions")
       ->check(seed_value())
       ->capture_default_str();
@@ -78,7 +65,6 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--out", opt->job.out, "Output sim.json (required unless --print-physics)");
   cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
   cmd->callback([opt]() {
-    if (!opt->job.object.empty()) opt->job.object = resolve_object_path(opt->job.object);
     if (opt->print_physics) {
       std::cout << physics_settings_yaml(validate_job_physics(opt->job));
       return;

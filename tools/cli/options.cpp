@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cordgrasp/jobs/plan_settings.h"
 #include "cordgrasp/sim/validate_grasp.h"
 
 namespace cordgrasp::cli {
@@ -125,50 +126,71 @@ CLI::Option* add_scale_option(CLI::App* cmd, double* scale, const std::string& e
       ->add_option("--scale", *scale,
                    "Uniform object scale after --units, e.g. 2 for a mesh at half its real "
                    "size" + extra_help)
-      ->check(number_in(1e-6, 1000.0))
+      ->check(settings_number("scale"))
       ->capture_default_str();
 }
 
-void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
+CLI::Validator settings_number(const std::string& key) {
+  const auto [lo, hi] = plan_settings_range(key);
+  return number_in(lo, hi);
+}
+
+CLI::Validator settings_whole_number(const std::string& key) {
+  const auto [lo, hi] = plan_settings_range(key);
+  return whole_number_in(static_cast<long long>(lo), static_cast<long long>(hi));
+}
+
+void add_planner_option(CLI::App* cmd, PlanJobParams& p) {
   add_enum_option(cmd, "--planner", &p.planner,
                   "cord (Li et al. 2015) or generic (Simox baseline)");
-  cmd->add_option("--grasps,-n", p.plan.grasps, "Stop after this many force-closure grasps")
-      ->check(whole_number_in(1, 10000))
-      ->capture_default_str();
-  DiversityParams& d = p.plan.diversity;
-  cmd->add_option("--min-gcp-distance", d.min_gcp_distance_m,
-                  "Grasps differ pairwise: GCPs at least this far apart [m]...")
-      ->check(number_in(0.0, 10.0))
-      ->capture_default_str();
-  cmd->add_option("--min-gcp-distance-per-radius", d.min_gcp_distance_per_radius,
-                  "...or this fraction of the object's bounding radius, if more...")
-      ->check(number_in(0.0, 10.0))
-      ->capture_default_str();
-  cmd->add_option("--min-hand-turn", d.min_hand_turn_deg,
-                  "...or hand orientations at least this far apart [deg] (all 0: no rule)")
-      ->check(number_in(0.0, 180.0))
-      ->capture_default_str();
-  cmd->add_option("--max-attempts", p.plan.max_attempts,
-                  "Stop after this many finger-stage attempts: the stopping rule, the same on "
-                  "every machine")
-      ->check(whole_number_in(1, 100000000))
-      ->capture_default_str();
-  cmd->add_option("--time-limit", p.plan.time_limit_s,
-                  "Safety net: wall-clock limit of the plan [s]; when it fires, the result "
-                  "depends on the machine's speed (timed_out in plan.json and results.csv)")
-      ->check(number_in(1e-3, 1e6))
+}
+
+void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
+  cmd->add_option("--grasps,-n", p.plan.grasps,
+                  "Grasps wanted, pairwise distinct (the diversity rule, docs/algorithm.md §10b)")
+      ->check(settings_whole_number("grasps"))
       ->capture_default_str();
   cmd->add_option("--seed", p.plan.seed, "Seed of every random choice")
       ->check(seed_value())
       ->capture_default_str();
   cmd->add_option("--mu", p.plan.quality.contact.mu,
                   "Friction coefficient of the wrench space and the physics")
-      ->check(number_in(0.0, 10.0))
+      ->check(settings_number("quality.contact.mu"))
+      ->capture_default_str();
+}
+
+void add_units_option(CLI::App* cmd, PlanJobParams& p) {
+  add_enum_option(cmd, "--units", &p.units, "Units of the object file: m, mm or auto");
+}
+
+void add_planner_tuning_options(CLI::App* cmd, PlanJobParams& p) {
+  DiversityParams& d = p.plan.diversity;
+  cmd->add_option("--min-gcp-distance", d.min_gcp_distance_m,
+                  "Grasps differ pairwise: GCPs at least this far apart [m]...")
+      ->check(settings_number("diversity.min_gcp_distance_m"))
+      ->capture_default_str();
+  cmd->add_option("--min-gcp-distance-per-radius", d.min_gcp_distance_per_radius,
+                  "...or this fraction of the object's bounding radius, if more...")
+      ->check(settings_number("diversity.min_gcp_distance_per_radius"))
+      ->capture_default_str();
+  cmd->add_option("--min-hand-turn", d.min_hand_turn_deg,
+                  "...or hand orientations at least this far apart [deg] (all 0: no rule)")
+      ->check(settings_number("diversity.min_hand_turn_deg"))
+      ->capture_default_str();
+  cmd->add_option("--max-attempts", p.plan.max_attempts,
+                  "Stop after this many finger-stage attempts: the stopping rule, the same on "
+                  "every machine")
+      ->check(settings_whole_number("max_attempts"))
+      ->capture_default_str();
+  cmd->add_option("--time-limit", p.plan.time_limit_s,
+                  "Safety net: wall-clock limit of the plan [s]; when it fires, the result "
+                  "depends on the machine's speed (timed_out in plan.json and results.csv)")
+      ->check(settings_number("time_limit_s"))
       ->capture_default_str();
   cmd->add_option("--soft-finger-radius", p.soft_finger_radius_m,
                   "Contact patch radius for torsional friction [m]; 0 = point contacts "
                   "(default: the hand's soft_finger_radius_m, 5 mm for the grippers)")
-      ->check(number_in(0.0, 0.0499));
+      ->check(settings_number("quality.contact.soft_finger_radius_m"));
   add_enum_option(cmd, "--side-cords", &p.cord.side_cord_policy,
                   "Cord: a scanned cord that fails: fallback (the paper's discard where the "
                   "object allows it, else empty), discard, empty (missed cords score as empty "
@@ -176,14 +198,24 @@ void add_plan_job_options(CLI::App* cmd, PlanJobParams& p) {
   add_enum_option(cmd, "--quality", &p.plan.quality.mode,
                   "textbook (real mu, eps = origin to hull) or simox (compat quirks, "
                   "docs/algorithm.md §8)");
-  add_enum_option(cmd, "--units", &p.units, "Units of the object file: m, mm or auto");
+  add_units_option(cmd, p);
   add_scale_option(cmd, &p.scale);
   cmd->add_option("--sets", p.cord.sets, "Cord: valid sets to sample before local improvement")
-      ->check(whole_number_in(1, 100000))
+      ->check(settings_whole_number("cord.sets"))
       ->capture_default_str();
   cmd->add_flag_callback(
       "--no-local-improvement", [&p]() { p.cord.local_improvement = false; },
       "Cord: skip the local improvement of the sampled sets");
+}
+
+void add_plan_settings_option(CLI::App* cmd, PlanJobParams& p, ValidationParams& v) {
+  cmd->add_option_function<std::string>(
+         "--settings",
+         [&p, &v](const std::string& path) { merge_plan_settings_file(path, &p, &v); },
+         "Planner settings (JSON, or YAML named *.yaml): any fields of plan.json's parameters "
+         "and validation blocks, or a plan.json whose settings to repeat; the options given "
+         "here win (docs/algorithm.md §10c)")
+      ->trigger_on_parse();  // before the other options' values are stored: those win
 }
 
 void add_package_path_option(CLI::App* cmd, HandLoadOptions& o) {

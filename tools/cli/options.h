@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cordgrasp/core/hand_description.h"
+#include "cordgrasp/jobs/grasp_validation.h"
 #include "cordgrasp/jobs/parse_name.h"
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/render_options.h"
@@ -58,11 +59,30 @@ CLI::Validator physics_tests(bool allow_none);
 /// Adds --scale (a uniform object scale after --units, in (0, 1000]) bound to `*scale`.
 CLI::Option* add_scale_option(CLI::App* cmd, double* scale, const std::string& extra_help = "");
 
-/// Adds the planner options (--planner, --grasps, --max-attempts, --time-limit, --seed, --mu,
-/// --soft-finger-radius, --side-cords, --quality, --units, --scale, --sets,
-/// --no-local-improvement) to
-/// `cmd`, bound to `p`.
+/// A number check with the range of planner settings key `key` (plan_settings_range).
+CLI::Validator settings_number(const std::string& key);
+
+/// A whole-number check with the range of planner settings key `key`.
+CLI::Validator settings_whole_number(const std::string& key);
+
+/// Adds --planner (cord or generic), bound to p.planner.
+void add_planner_option(CLI::App* cmd, PlanJobParams& p);
+
+/// Adds --grasps, --seed and --mu to `cmd`, bound to `p`.
 void add_plan_job_options(CLI::App* cmd, PlanJobParams& p);
+
+/// Adds --units (m, mm or auto), bound to p.units.
+void add_units_option(CLI::App* cmd, PlanJobParams& p);
+
+/// Adds the planner's other settings as options (bench only; plan and run take them from a
+/// --settings file): --min-gcp-distance(-per-radius), --min-hand-turn, --max-attempts,
+/// --time-limit, --soft-finger-radius, --side-cords, --quality, --units, --scale, --sets,
+/// --no-local-improvement.
+void add_planner_tuning_options(CLI::App* cmd, PlanJobParams& p);
+
+/// Adds --settings FILE (merge_plan_settings_file into `p` and `v`), merged while the command
+/// line is read, so that the options given with it win.
+void add_plan_settings_option(CLI::App* cmd, PlanJobParams& p, ValidationParams& v);
 
 /// Adds --package-path NAME=DIR (repeatable) to `cmd`: the directory of ROS package NAME for
 /// package://NAME/... mesh URIs, into o.package_paths (searched before ROS_PACKAGE_PATH and

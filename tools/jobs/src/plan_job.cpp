@@ -31,7 +31,8 @@ Mesh load_job_mesh(const PlanJobParams& p, const std::string& object_path) {
   const double diagonal_m = mesh_bounds(mesh).size().norm();
   if (load.units == LengthUnits::kMeters && diagonal_m > load.auto_mm_diagonal)
     std::cerr << "cordgrasp: warning: '" << object_path << "' is " << diagonal_m
-              << " m across: if the file is in millimetres, give --units mm (or auto)\n";
+              << " m across: if the file is in millimetres, give --units mm (or auto; in a "
+                 "settings file, units: mm)\n";
   return mesh;
 }
 
@@ -55,11 +56,12 @@ std::string no_grasp_message(const std::string& who, const PlanDocument& doc, co
   std::string text = who + ": no force-closure grasp of " + doc.object_name + " with " +
                      doc.hand_name + " (" + to_string(doc.planner) + " planner, " +
                      std::to_string(s.attempts) + " attempts in " + fixed1(s.total_s) + " s, " +
-                     why + "); try another --seed, --planner or a larger --max-attempts";
+                     why + "); try another --seed, another planner or a larger max_attempts (--settings)";
   const double diagonal_m = mesh_bounds(mesh).size().norm();
   if (diagonal_m > kHugeObjectDiagonal_m)
     text += "; the object is " + fixed1(diagonal_m) +
-            " m across: if the file is in millimetres, give --units mm (or auto)";
+            " m across: if the file is in millimetres, give --units mm (or auto; in a settings "
+            "file, units: mm)";
   return text;
 }
 

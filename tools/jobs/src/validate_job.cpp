@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "cordgrasp/core/atomic_file.h"
+#include "cordgrasp/core/assets.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
@@ -69,7 +70,7 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   mesh_opt.scale = opt.scale.value_or(plan.object_scale);
   Mesh mesh;
   if (opt.object.empty()) {
-    mesh = load_mesh(plan.object_path, mesh_opt);
+    mesh = load_mesh(resolve_object_path(plan.object_path), mesh_opt);  // or a shipped name
   } else {
     mesh = load_mesh(opt.object, mesh_opt);
     if (canonical(opt.object) != canonical(plan.object_path)) {
