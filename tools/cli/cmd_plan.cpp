@@ -121,27 +121,7 @@ void add_plan_command(CLI::App& app) {
   add_plan_job_options(cmd, opt->job);
   add_units_option(cmd, opt->job);
   add_plan_settings_option(cmd, opt->job, opt->validation);
-  auto* validate = opt.get();
-  cmd->add_option_function<std::string>(
-         "--validate",
-         [validate](const std::string& protocol) {
-           validate->validate = true;
-           if (!protocol.empty()) parse_name(protocol, &validate->validation.protocol);
-         },
-         std::string("[PROTOCOL] Keep only grasps that hold in physics under PROTOCOL (default ") +
-             to_string(opt->validation.protocol) +
-             "): force-closure candidates, best first, until --grasps are accepted or the "
-             "settings' validation.budget_s is spent. " + kProtocolHelp)
-      ->expected(0, 1)
-      ->check([](const std::string& text) {
-        Protocol protocol{};
-        try {
-          parse_name(text, &protocol);
-        } catch (const std::invalid_argument& e) {
-          return enum_refusal(text, e.what());
-        }
-        return std::string();
-      });
+  add_validate_option(cmd, &opt->validate, &opt->validation.protocol);
   cmd->add_option("--physics", opt->validation.physics_file,
                   std::string("--validate: ") + kPhysicsHelp);
   cmd->add_option("--jobs,-j", opt->jobs,

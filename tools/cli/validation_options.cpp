@@ -58,6 +58,29 @@ const char* const kProtocolHelp =
     "past); quick (a squeeze spring 0.5 rad past the plan); thorough (quick's close, long "
     "phases, no early exits)";
 
+void add_validate_option(CLI::App* cmd, bool* validate, Protocol* protocol) {
+  cmd->add_option_function<std::string>(
+         "--validate",
+         [validate, protocol](const std::string& text) {
+           *validate = true;
+           if (!text.empty()) parse_name(text, protocol);
+         },
+         std::string("[PROTOCOL] Keep only grasps that hold in physics under PROTOCOL (default ") +
+             to_string(*protocol) +
+             "): force-closure candidates, best first, until --grasps are accepted or the "
+             "settings' validation.budget_s is spent. " + kProtocolHelp)
+      ->expected(0, 1)
+      ->check([](const std::string& text) {
+        Protocol p{};
+        try {
+          parse_name(text, &p);
+        } catch (const std::invalid_argument& e) {
+          return enum_refusal(text, e.what());
+        }
+        return std::string();
+      });
+}
+
 void add_sim_override_options(CLI::App* cmd, SimOverrides& o, const std::string& recorded_note) {
   cmd->add_option("--mass", o.mass_kg, "Object mass [kg] (default: " + recorded_note +
                                            "from the volume, docs/physics.md §2)")

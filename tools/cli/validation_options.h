@@ -22,6 +22,9 @@ void add_trial_nudge_options(CLI::App* cmd, PerturbationParams& p);
 /// `v`.
 void add_validation_options(CLI::App* cmd, ValidationParams& v);
 
+/// Adds --validate [PROTOCOL]: sets *validate, and *protocol when a protocol is named.
+void add_validate_option(CLI::App* cmd, bool* validate, Protocol* protocol);
+
 /// Adds --mass [kg], --density [kg/m³] and --squeeze-weight, bound to `o`; `recorded_note`
 /// ("the plan's, else ") prefixes the defaults in the help.
 void add_sim_override_options(CLI::App* cmd, SimOverrides& o,
