@@ -16,6 +16,18 @@ namespace cordgrasp::cli {
 /// "cm is not one of m, mm, auto" from a parse_name refusal of `text`.
 std::string enum_refusal(const std::string& text, const std::string& parse_error);
 
+/// Accepts the to_string names of enum E; refusals read "--units: cm is not one of m, mm, auto".
+template <typename E>
+std::string enum_name_check(const std::string& text) {
+  E value{};
+  try {
+    parse_name(text, &value);
+  } catch (const std::invalid_argument& e) {
+    return enum_refusal(text, e.what());
+  }
+  return std::string();
+}
+
 /// An option naming an enumerator of `*field` (its to_string names; parse_name rejects others),
 /// with the field's current value as the default shown by --help.
 template <typename E>
@@ -24,15 +36,7 @@ CLI::Option* add_enum_option(CLI::App* cmd, const std::string& name, E* field,
   return cmd
       ->add_option_function<std::string>(
           name, [field](const std::string& text) { parse_name(text, field); }, help)
-      ->check([](const std::string& text) {
-        E value{};
-        try {
-          parse_name(text, &value);
-        } catch (const std::invalid_argument& e) {
-          return enum_refusal(text, e.what());
-        }
-        return std::string();
-      })
+      ->check(enum_name_check<E>)
       ->default_str(to_string(*field));
 }
 

@@ -70,15 +70,7 @@ void add_validate_option(CLI::App* cmd, bool* validate, Protocol* protocol) {
              "): force-closure candidates, best first, until --grasps are accepted or the "
              "settings' validation.budget_s is spent. " + kProtocolHelp)
       ->expected(0, 1)
-      ->check([](const std::string& text) {
-        Protocol p{};
-        try {
-          parse_name(text, &p);
-        } catch (const std::invalid_argument& e) {
-          return enum_refusal(text, e.what());
-        }
-        return std::string();
-      });
+      ->check(enum_name_check<Protocol>);
 }
 
 void add_sim_override_options(CLI::App* cmd, SimOverrides& o, const std::string& recorded_note) {
