@@ -1,7 +1,7 @@
-// Validated planning (docs/algorithm.md §13): accepted grasps hold when the written plan.json is
+// Validated planning (docs/algorithm.md §10a): accepted grasps hold when the written plan.json is
 // validated again by a separate `cordgrasp validate`, and differ pairwise by the diversity
 // threshold. The parallel gripper on the box keeps the CPU small (< 2 s per plan).
-#include "cordgrasp/jobs/plan_validated_grasps.h"
+#include "cordgrasp/jobs/validated_plan_job.h"
 
 #include <gtest/gtest.h>
 
@@ -43,7 +43,7 @@ struct BoxPlan {
     mesh = load_job_mesh(job, object);
   }
   PlanDocument plan() const {
-    return plan_validated_grasps(job, v, mesh, object, hand);
+    return validated_plan_job(job, v, mesh, object, hand);
   }
 };
 
@@ -259,9 +259,8 @@ TEST(GraspsDiffer, ByGcpDistanceOrHandTurn) {
 TEST(PlanValidatedGrasps, ACancelledPlanStopsBeforeItsNextCandidateAndSaysSo) {
   const BoxPlan box(2);
   std::atomic<int> signal{SIGINT};  // asked to stop before it began
-  const PlanDocument plan = plan_validated_grasps(box.job, box.v, box.mesh,
-                                                  box.object, box.hand, 1, {},
-                                                  CancelToken(&signal));
+  const PlanDocument plan = validated_plan_job(box.job, box.v, box.mesh, box.object, box.hand,
+                                               1, {}, CancelToken(&signal));
   EXPECT_EQ(plan.interrupted, "SIGINT");
   EXPECT_TRUE(plan.stats.interrupted);
   EXPECT_TRUE(plan.grasps.empty());
@@ -269,9 +268,8 @@ TEST(PlanValidatedGrasps, ACancelledPlanStopsBeforeItsNextCandidateAndSaysSo) {
   EXPECT_FALSE(plan.validation->stats.budget_spent);
   // Not cancelled: the same plan runs to its end.
   signal = 0;
-  const PlanDocument whole = plan_validated_grasps(box.job, box.v, box.mesh,
-                                                   box.object, box.hand, 1, {},
-                                                   CancelToken(&signal));
+  const PlanDocument whole = validated_plan_job(box.job, box.v, box.mesh, box.object, box.hand,
+                                                1, {}, CancelToken(&signal));
   EXPECT_EQ(whole.interrupted, "");
   EXPECT_EQ(whole.grasps.size(), 2u);
 }
