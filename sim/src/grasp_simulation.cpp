@@ -45,37 +45,6 @@ bool finite(const btVector3& v) {
 
 }  // namespace
 
-const char* to_string(Outcome outcome) {
-  switch (outcome) {
-    case Outcome::kHeld: return "held";
-    case Outcome::kSlipped: return "slipped";
-    case Outcome::kDropped: return "dropped";
-    case Outcome::kUnstable: return "unstable";
-    case Outcome::kNotRun: return "not_run";
-  }
-  return "?";
-}
-
-Outcome parse_outcome(const std::string& text) {
-  for (Outcome o : {Outcome::kHeld, Outcome::kSlipped, Outcome::kDropped, Outcome::kUnstable,
-                    Outcome::kNotRun})
-    if (text == to_string(o)) return o;
-  throw std::invalid_argument("unknown outcome '" + text +
-                              "' (allowed: held, slipped, dropped, unstable, not_run)");
-}
-
-const PhaseResult* SimResult::phase(const std::string& name) const {
-  for (const PhaseResult& p : phases)
-    if (p.name == name) return &p;
-  return nullptr;
-}
-
-const PhaseResult* SimResult::failed_phase() const {
-  for (const PhaseResult& p : phases)
-    if (p.outcome != Outcome::kHeld && p.outcome != Outcome::kNotRun) return &p;
-  return nullptr;
-}
-
 struct GraspSimulation::Impl {
   HandModel hand;
   Grasp grasp;

@@ -1,7 +1,8 @@
-// Validated planning (docs/algorithm.md §13): accepted grasps hold when the written plan.json is
+// Validated planning (docs/algorithm.md §10a): accepted grasps hold when the written plan.json is
 // validated again by a separate `cordgrasp validate`, and differ pairwise by the diversity
-// threshold. The parallel gripper on the box keeps the CPU small (< 2 s per plan).
-#include "cordgrasp/jobs/plan_validated_grasps.h"
+// threshold; the library algorithm (sim) called directly agrees with the job. The parallel
+// gripper on the box keeps the CPU small (< 2 s per plan).
+#include "cordgrasp/jobs/validated_plan_job.h"
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <unistd.h>
 #include <nlohmann/json.hpp>
 
@@ -20,6 +22,7 @@
 #include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/validate_job.h"
 #include "cordgrasp/jobs/validate_plan.h"
+#include "cordgrasp/sim/plan_validated_grasps.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
@@ -44,7 +47,7 @@ struct BoxPlan {
     mesh = load_job_mesh(job, object);
   }
   PlanDocument plan() const {
-    return plan_validated_grasps(job, v, mesh, object, hand);
+    return validated_plan_job(job, v, mesh, object, hand);
   }
 };
 
@@ -117,6 +120,74 @@ TEST(PlanValidatedGrasps, AcceptedGraspsDifferPairwiseByTheDiversityThreshold) {
   EXPECT_GT(plan.validation->stats.similar, 0);
   expect_pairwise_distinct(plan.grasps, d, bounding_radius(box.mesh, vertex_mean(box.mesh)),
                            "validated box");
+}
+
+/// The algorithm's inputs for `box` as a library user builds them by hand (sim level, no job):
+/// seeds from plan.seed, the hand's soft-finger radius, the plan's time limit on the
+/// exploration, the rules' protocol with the plan's friction model and squeeze-shift limit.
+struct SimLevelInputs {
+  PlanParams plan;
+  CordParams cord;
+  SimParams sim;
+
+  explicit SimLevelInputs(const BoxPlan& box) : plan(box.job.plan), cord(box.job.cord) {
+    plan.quality.contact.soft_finger_radius_m = box.hand.soft_finger_radius_m;
+    plan.quality.seed = plan.seed;
+    cord.seed = plan.seed;
+    cord.time_limit_s = plan.time_limit_s;
+    sim = sim_params_for(box.v.protocol);
+    sim.contact = plan.quality.contact;
+    sim.squeeze_shift_limit_m = box.v.squeeze_shift_limit_m;
+  }
+};
+
+TEST(PlanValidatedGrasps, TheLibraryAlgorithmAcceptsDistinctHeldGraspsAndTheJobAgrees) {
+  BoxPlan box(3);
+  DiversityParams& d = box.job.plan.diversity;
+  d.min_gcp_distance_m = 0.02;  // near copies occur: the diversity skip runs
+  d.min_hand_turn_deg = 45.0;
+  const SimLevelInputs in(box);
+  const ValidatedPlan direct = plan_validated_grasps(box.mesh, box.hand, PlannerKind::kCord,
+                                                     in.plan, in.cord, box.v, in.sim);
+  EXPECT_FALSE(direct.interrupted);
+  ASSERT_GE(direct.grasps.size(), 2u);  // pairs to check
+  const PlanValidation& record = direct.validation;
+  ASSERT_EQ(record.grasps.size(), direct.grasps.size());
+  EXPECT_EQ(record.stats.accepted, static_cast<int>(direct.grasps.size()));
+  EXPECT_GT(record.stats.similar, 0);
+  EXPECT_EQ(record.params.min_held, kMinHeld);
+  EXPECT_EQ(record.stats.force_closure, direct.stats.force_closure);
+  for (const GraspValidation& g : record.grasps) {
+    EXPECT_GE(g.held_trials, kMinHeld);
+    EXPECT_LE(g.held_trials, g.trials);
+    EXPECT_LE(g.trials, kTrials);
+    EXPECT_EQ(g.lift, Outcome::kHeld);  // held as planned (require_held_as_planned)
+  }
+  expect_pairwise_distinct(direct.grasps, d, bounding_radius(box.mesh, vertex_mean(box.mesh)),
+                           "sim-level validated box");
+
+  // The job (plan document, physics_settings) reaches the same grasps and verdicts.
+  const PlanDocument job = box.plan();
+  ASSERT_EQ(job.grasps.size(), direct.grasps.size());
+  ASSERT_TRUE(job.validation.has_value());
+  for (size_t k = 0; k < job.grasps.size(); ++k) {
+    EXPECT_TRUE(job.grasps[k].X_OB.matrix() == direct.grasps[k].X_OB.matrix()) << k;
+    EXPECT_TRUE(job.grasps[k].q == direct.grasps[k].q) << k;
+    EXPECT_EQ(job.grasps[k].region_rank, direct.grasps[k].region_rank) << k;
+    EXPECT_EQ(job.validation->grasps[k].held_trials, record.grasps[k].held_trials) << k;
+    EXPECT_EQ(job.validation->grasps[k].trials, record.grasps[k].trials) << k;
+    EXPECT_EQ(job.validation->grasps[k].squeeze_shift_m, record.grasps[k].squeeze_shift_m) << k;
+  }
+  EXPECT_EQ(job.validation->stats.similar, record.stats.similar);
+  EXPECT_EQ(job.validation->stats.simulated, record.stats.simulated);
+  EXPECT_EQ(job.validation->stats.trials_run, record.stats.trials_run);
+  EXPECT_EQ(job.stats.attempts, direct.stats.attempts);
+  EXPECT_EQ(job.interrupted, "");
+
+  // The cord planner needs its exploration parameters.
+  EXPECT_THROW(plan_validated_grasps(box.mesh, box.hand, PlannerKind::kCord, in.plan,
+                                     std::nullopt, box.v, in.sim),
+               std::invalid_argument);
 }
 
 TEST(PlainPlanning, ReturnsGraspsThatDifferPairwiseOnEveryShippedObject) {
@@ -267,9 +338,8 @@ TEST(GraspsDiffer, ByGcpDistanceOrHandTurn) {
 TEST(PlanValidatedGrasps, ACancelledPlanStopsBeforeItsNextCandidateAndSaysSo) {
   const BoxPlan box(2);
   std::atomic<int> signal{SIGINT};  // asked to stop before it began
-  const PlanDocument plan = plan_validated_grasps(box.job, box.v, box.mesh,
-                                                  box.object, box.hand, 1, {},
-                                                  CancelToken(&signal));
+  const PlanDocument plan = validated_plan_job(box.job, box.v, box.mesh, box.object, box.hand,
+                                               1, {}, CancelToken(&signal));
   EXPECT_EQ(plan.interrupted, "SIGINT");
   EXPECT_TRUE(plan.stats.interrupted);
   EXPECT_TRUE(plan.grasps.empty());
@@ -277,9 +347,8 @@ TEST(PlanValidatedGrasps, ACancelledPlanStopsBeforeItsNextCandidateAndSaysSo) {
   EXPECT_FALSE(plan.validation->stats.budget_spent);
   // Not cancelled: the same plan runs to its end.
   signal = 0;
-  const PlanDocument whole = plan_validated_grasps(box.job, box.v, box.mesh,
-                                                   box.object, box.hand, 1, {},
-                                                   CancelToken(&signal));
+  const PlanDocument whole = validated_plan_job(box.job, box.v, box.mesh, box.object, box.hand,
+                                                1, {}, CancelToken(&signal));
   EXPECT_EQ(whole.interrupted, "");
   EXPECT_EQ(whole.grasps.size(), 2u);
 }

@@ -13,8 +13,8 @@
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/plan_json.h"
-#include "cordgrasp/jobs/plan_validated_grasps.h"
 #include "cordgrasp/jobs/render_options.h"
+#include "cordgrasp/jobs/validated_plan_job.h"
 #include "validation_options.h"
 
 namespace cordgrasp::cli {
@@ -87,11 +87,11 @@ void run_plan(const PlanOptions& opt) {
   const HandModel hand = load_hand(opt.hand);
   PlanDocument doc;
   if (opt.validate) {
-    doc = plan_validated_grasps(opt.job, opt.validation, mesh, object_path, hand, opt.jobs,
-                                [](const std::string& line) {
-                                  std::cerr << "plan: " << line << '\n';
-                                },
-                                cancel);
+    doc = validated_plan_job(opt.job, opt.validation, mesh, object_path, hand, opt.jobs,
+                             [](const std::string& line) {
+                               std::cerr << "plan: " << line << '\n';
+                             },
+                             cancel);
   } else {
     doc = plan_job(opt.job, mesh, object_path, hand, cancel);
   }

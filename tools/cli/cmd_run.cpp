@@ -8,8 +8,8 @@
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/object_meshes.h"
-#include "cordgrasp/jobs/plan_validated_grasps.h"
 #include "cordgrasp/jobs/run_job.h"
+#include "cordgrasp/jobs/validated_plan_job.h"
 #include "options.h"
 #include "validation_options.h"
 

@@ -4,7 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <optional>
 
-#include "cordgrasp/jobs/grasp_validation.h"
+#include "cordgrasp/sim/grasp_validation.h"
 
 namespace cordgrasp::cli {
 

@@ -17,11 +17,11 @@
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
+#include "cordgrasp/core/parallel_for.h"
 #include "cordgrasp/jobs/physics_settings.h"
-#include "cordgrasp/jobs/plan_validated_grasps.h"
 #include "cordgrasp/jobs/sim_json.h"
 #include "cordgrasp/jobs/text_format.h"
-#include "parallel_for.h"
+#include "cordgrasp/jobs/validated_plan_job.h"
 #include "params_json.h"
 
 namespace cordgrasp {
@@ -528,8 +528,8 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
       v.tests = params.tests == "none" ? std::string("lift,shake") : params.tests;
       v.protocol = params.protocol;
       v.physics_file = params.physics_file;
-      plan = plan_validated_grasps(job, v, *mesh, attempt.object_path, *hand, 1, {}, cancel,
-                                   params.sim_cache_dir);
+      plan = validated_plan_job(job, v, *mesh, attempt.object_path, *hand, 1, {}, cancel,
+                                params.sim_cache_dir);
       const ValidationStats& vs = plan.validation->stats;
       row.validated_accepted = vs.accepted;
       row.validated_candidates = vs.force_closure;

@@ -14,9 +14,9 @@
 #include "cordgrasp/jobs/hand_scene.h"
 #include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/physics_settings.h"
-#include "cordgrasp/jobs/plan_validated_grasps.h"
 #include "cordgrasp/jobs/text_format.h"
 #include "cordgrasp/jobs/validate_plan.h"
+#include "cordgrasp/jobs/validated_plan_job.h"
 #include "cordgrasp/render/contact_sheet.h"
 #include "cordgrasp/render/png_io.h"
 #include "cordgrasp/render/renderer.h"
@@ -85,8 +85,8 @@ void plan_stage(const RunParams& opt, const RunInputs& in, const RunProgress& pr
                             fixed(validation.budget_s, 0) + " s"
                       : " grasps within " + fixed(opt.job.plan.time_limit_s, 0) + " s"));
   const auto t = Clock::now();
-  report->plan = validated ? plan_validated_grasps(opt.job, validation, *in.mesh, in.object_path,
-                                                   in.hand, opt.jobs, progress, opt.cancel)
+  report->plan = validated ? validated_plan_job(opt.job, validation, *in.mesh, in.object_path,
+                                                in.hand, opt.jobs, progress, opt.cancel)
                            : plan_job(opt.job, *in.mesh, in.object_path, in.hand, opt.cancel);
   report->plan_wall_s = seconds_since(t);
   write_plan_file(in.plan_path, report->plan, in.hand);

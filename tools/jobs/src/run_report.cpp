@@ -1,7 +1,7 @@
 #include "cordgrasp/jobs/run_report.h"
 
-#include "cordgrasp/jobs/plan_validated_grasps.h"
 #include "cordgrasp/jobs/text_format.h"
+#include "cordgrasp/jobs/validated_plan_job.h"
 
 #include <algorithm>
 #include <cmath>

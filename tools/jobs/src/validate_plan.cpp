@@ -8,8 +8,8 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "cordgrasp/core/parallel_for.h"
 #include "cordgrasp/jobs/text_format.h"
-#include "parallel_for.h"
 
 namespace cordgrasp {
 namespace {
@@ -161,10 +161,6 @@ std::string validation_summary(const SimDocument& doc, const std::string& tests,
     text += trials_line(all) + " of all grasps\n";
   }
   return text;
-}
-
-int count_held(const std::vector<Outcome>& outcomes) {
-  return static_cast<int>(std::count(outcomes.begin(), outcomes.end(), Outcome::kHeld));
 }
 
 std::string trials_line(const std::vector<Outcome>& outcomes) {

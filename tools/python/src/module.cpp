@@ -24,10 +24,10 @@
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/physics_settings.h"
-#include "cordgrasp/jobs/plan_validated_grasps.h"
 #include "cordgrasp/jobs/render_options.h"
 #include "cordgrasp/jobs/sim_json.h"
 #include "cordgrasp/jobs/validate_plan.h"
+#include "cordgrasp/jobs/validated_plan_job.h"
 #include "cordgrasp/render/png_io.h"
 #include "cordgrasp/render/renderer.h"
 #include "kwargs_params.h"
@@ -318,7 +318,7 @@ void bind_plan(py::module_& m) {
         ValidationParams v;
         set_from_kwargs(&v, validation);
         return run_plan(mesh, hand, [&](const std::string& path) {
-          return plan_validated_grasps(params, v, *mesh.mesh, path, *hand.hand, jobs);
+          return validated_plan_job(params, v, *mesh.mesh, path, *hand.hand, jobs);
         });
       },
       py::arg("mesh"), py::arg("hand"), py::arg("validation") = py::dict(), py::arg("jobs") = 1,

@@ -24,6 +24,9 @@ const char* to_string(Outcome outcome);
 /// Parses the names of to_string(Outcome). @throws std::invalid_argument otherwise.
 Outcome parse_outcome(const std::string& text);
 
+/// How many of `outcomes` are held.
+int count_held(const std::vector<Outcome>& outcomes);
+
 /// What one phase did and measured. Poses compare the object in the hand base frame with
 /// its pose right after closing (for settle and close: with the planned pose).
 struct PhaseResult {

@@ -20,8 +20,8 @@
 #include "cordgrasp/core/hand_description.h"
 #include "cordgrasp/core/hand_model.h"
 #include "cordgrasp/core/mesh.h"
-#include "cordgrasp/jobs/grasp_validation.h"
 #include "cordgrasp/jobs/plan_job.h"
+#include "cordgrasp/sim/grasp_validation.h"
 #include "cordgrasp/sim/sim_params.h"
 
 namespace cordgrasp {
@@ -38,7 +38,7 @@ struct BenchParams {
   Protocol protocol = SimParams{}.protocol;  ///< physics protocol preset
   std::string sim_cache_dir;          ///< on-disk convex decomposition cache ("" = memory only)
   std::string physics_file;           ///< physics settings file over the protocol ("" = none)
-  /// Set: each attempt plans with plan_validated_grasps (its tests and protocol: from above)
+  /// Set: each attempt plans with validated_plan_job (its tests and protocol: from above)
   /// and fills the validated_* columns.
   std::optional<ValidationParams> validation;
   HandLoadOptions hand_load;          ///< package:// directories of the hands' URDFs

@@ -37,7 +37,7 @@
 #include "cordgrasp/core/grasp.h"
 #include "cordgrasp/core/grasp_plan.h"
 #include "cordgrasp/core/hand_model.h"
-#include "cordgrasp/jobs/grasp_validation.h"
+#include "cordgrasp/sim/grasp_validation.h"
 
 namespace cordgrasp {
 

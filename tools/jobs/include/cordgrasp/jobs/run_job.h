@@ -5,12 +5,12 @@
 #include <string>
 
 #include "cordgrasp/core/cancel_token.h"
-#include "cordgrasp/jobs/grasp_validation.h"
 #include "cordgrasp/core/hand_description.h"
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/render_options.h"
 #include "cordgrasp/jobs/run_report.h"
 #include "cordgrasp/jobs/sim_json.h"
+#include "cordgrasp/sim/grasp_validation.h"
 #include "cordgrasp/sim/sim_params.h"
 
 namespace cordgrasp {
@@ -24,7 +24,7 @@ struct RunParams {
   std::string tests = "lift,shake";  ///< physics tests (lift, shake, gravity6) or "none"
   Protocol protocol = SimParams{}.protocol;  ///< physics protocol preset
   int jobs = 1;                ///< physics threads (one world each); results independent of it
-  /// Plan only grasps that hold (plan_validated_grasps, with `tests` and `protocol`); false:
+  /// Plan only grasps that hold (validated_plan_job, with `tests` and `protocol`); false:
   /// force-closure grasps as planned, validated afterwards. Ignored with tests "none".
   bool validate = true;
   /// Validated planning (its tests, protocol: from above); validation.physics (mass,

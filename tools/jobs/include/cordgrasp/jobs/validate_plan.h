@@ -85,9 +85,6 @@ void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const Hand
 std::string validation_summary(const SimDocument& doc, const std::string& tests,
                                const std::string& out_path);
 
-/// How many of `outcomes` are held.
-int count_held(const std::vector<Outcome>& outcomes);
-
 /// Trials of a grasp that held: "held in 3 / 5 trials".
 std::string trials_line(const std::vector<Outcome>& outcomes);
 

@@ -1,26 +1,25 @@
-#include "cordgrasp/jobs/plan_validated_grasps.h"
+#include "cordgrasp/sim/plan_validated_grasps.h"
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
-#include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <ctime>
 #include <memory>
-#include <optional>
 #include <stdexcept>
-#include <vector>
+#include <utility>
 
 #include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/explore_cords.h"
+#include "cordgrasp/core/grasp_diversity.h"
+#include "cordgrasp/core/grasp_perturbation.h"
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/palm_width.h"
+#include "cordgrasp/core/parallel_for.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/plan_generic_grasps.h"
-#include "cordgrasp/jobs/physics_settings.h"
-#include "cordgrasp/jobs/text_format.h"
-#include "cordgrasp/jobs/validate_plan.h"
+#include "cordgrasp/sim/sim_result.h"
 #include "cordgrasp/sim/validate_grasp.h"
-#include "parallel_for.h"
 
 namespace cordgrasp {
 namespace {
@@ -59,18 +58,19 @@ void add_stats(PlanStats& total, const PlanStats& s) {
 /// exploration); the generic planner is called again with the next seed.
 class CandidateSource {
  public:
-  CandidateSource(const PlanDocument& doc, const Mesh& mesh, const HandModel& hand,
+  CandidateSource(const Mesh& mesh, const HandModel& hand, PlannerKind planner,
+                  const PlanParams& plan, const std::optional<CordParams>& cord,
                   const CancelToken& cancel)
-      : doc_(doc), mesh_(mesh), hand_(hand), cancel_(cancel),
+      : mesh_(mesh), hand_(hand), planner_(planner), plan_(plan), cord_(cord), cancel_(cancel),
         collider_(make_bullet_hand_collider(hand, mesh)) {}
 
   /// The next candidate, or nullopt when the planner has none left within `time_left_s`.
   std::optional<Grasp> next(double time_left_s, PlanStats& stats) {
     if (time_left_s <= 0.0 || cancel_.cancelled()) return std::nullopt;
-    PlanParams params = doc_.params;
+    PlanParams params = plan_;
     params.grasps = 1;
     params.time_limit_s = time_left_s;
-    if (doc_.planner == PlannerKind::kCord) {
+    if (planner_ == PlannerKind::kCord) {
       // Every region processed: explore again with the next seed (new regions), a few times.
       while (order_.empty() && explorations_ < kMaxExplorations) explore(time_left_s, stats);
       if (order_.empty()) return std::nullopt;
@@ -90,7 +90,7 @@ class CandidateSource {
       offset_ += rank + 1;
       return g;
     }
-    params.seed = doc_.params.seed + calls_++;
+    params.seed = plan_.seed + calls_++;
     params.quality.seed = params.seed;
     const PlanResult r = plan_generic_grasps(mesh_, hand_, *collider_, params, cancel_);
     add_stats(stats, r.stats);
@@ -101,7 +101,7 @@ class CandidateSource {
  private:
   void explore(double time_left_s, PlanStats& stats) {
     const auto start = Clock::now();
-    CordParams explore = *doc_.cord;
+    CordParams explore = *cord_;
     explore.seed += static_cast<std::uint64_t>(explorations_);
     if (explore.time_limit_s <= 0.0 || explore.time_limit_s > time_left_s)
       explore.time_limit_s = time_left_s;
@@ -115,9 +115,11 @@ class CandidateSource {
     ++explorations_;
   }
 
-  const PlanDocument& doc_;
   const Mesh& mesh_;
   const HandModel& hand_;
+  PlannerKind planner_;
+  const PlanParams& plan_;
+  const std::optional<CordParams>& cord_;
   CancelToken cancel_;
   std::unique_ptr<HandObjectCollider> collider_;
   static constexpr int kMaxExplorations = 4;  ///< the first and three with later seeds
@@ -136,11 +138,12 @@ Outcome phase_outcome(const SimResult& r, const char* name) {
 
 }  // namespace
 
-PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationParams& v,
-                                   const Mesh& mesh, const std::string& object_path,
-                                   const HandModel& hand, int jobs,
-                                   const ValidatedPlanProgress& progress,
-                                   const CancelToken& cancel, const std::string& cache_dir) {
+ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, PlannerKind planner,
+                                    const PlanParams& plan, const std::optional<CordParams>& cord,
+                                    const ValidationParams& rules, const SimParams& sim,
+                                    int jobs, const ValidatedPlanProgress& progress,
+                                    const CancelToken& cancel) {
+  const ValidationParams& v = rules;
   if (v.trials < 1 || v.trials > 1000)
     throw std::invalid_argument("plan_validated_grasps: trials must be in [1, 1000], got " +
                                 std::to_string(v.trials));
@@ -148,31 +151,26 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
     throw std::invalid_argument("plan_validated_grasps: min_held must be in [1, trials = " +
                                 std::to_string(v.trials) + "], got " +
                                 std::to_string(v.min_held));
+  if (planner == PlannerKind::kCord && !cord)
+    throw std::invalid_argument("plan_validated_grasps: the cord planner needs CordParams");
   const auto start = Clock::now();
   const double cpu_start = process_cpu_s();
   const auto cpu_used = [&] { return process_cpu_s() - cpu_start; };
   const auto say = [&](const std::string& line) { if (progress) progress(line); };
-  PlanDocument doc = plan_document_for(job, mesh, object_path, hand);
-  doc.validation = PlanValidation{};
-  PlanValidation& record = *doc.validation;
+  ValidatedPlan out;
+  PlanValidation& record = out.validation;
   record.params = v;
   ValidationStats& vs = record.stats;
   const SimTests tests = sim_tests_from_string(v.tests);
-  PhysicsChoice physics;
-  physics.protocol = v.protocol;
-  physics.overrides = v.physics;
-  physics.cache_dir = cache_dir;
-  physics.file = v.physics_file;
-  SimParams sim = physics_settings(plan_contact_model(doc), physics);
-  sim.squeeze_shift_limit_m = v.squeeze_shift_limit_m;
 
-  const int wanted = std::max(1, doc.params.grasps);
+  const int wanted = std::max(1, plan.grasps);
   const double radius_m = bounding_radius(mesh, vertex_mean(mesh));
-  CandidateSource source(doc, mesh, hand, cancel);
-  PlanStats& stats = doc.stats;
+  CandidateSource source(mesh, hand, planner, plan, cord, cancel);
+  PlanStats& stats = out.stats;
+  std::vector<Grasp>& accepted_grasps = out.grasps;
   int candidate = -1;
-  bool interrupted = false;  // stopped by `cancel` before the other rules
-  while (static_cast<int>(doc.grasps.size()) < wanted) {
+  bool& interrupted = out.interrupted;  // stopped by `cancel` before the other rules
+  while (static_cast<int>(accepted_grasps.size()) < wanted) {
     if (cancel.cancelled()) {
       interrupted = true;
       break;
@@ -192,7 +190,7 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
     }
     ++candidate;
     if (!stats.first_force_closure_s) stats.first_force_closure_s = seconds_since(start);
-    if (!differs_from_all(*g, doc.grasps, doc.params.diversity, radius_m)) {
+    if (!differs_from_all(*g, accepted_grasps, plan.diversity, radius_m)) {
       ++vs.similar;
       say("candidate " + std::to_string(candidate) + ": a near copy of an accepted grasp");
       continue;
@@ -206,8 +204,11 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
       ++vs.rejected_early;
       vs.physics_s += seconds_since(physics_start);
       const PhaseResult* close = first.phase("close");
+      char shift_mm[32];
+      std::snprintf(shift_mm, sizeof shift_mm, "%.0f",
+                    1e3 * (close ? close->translation_m : 0.0));
       say("candidate " + std::to_string(candidate) + ": rejected early, squeeze shift " +
-          fixed(1e3 * (close ? close->translation_m : 0.0), 0) + " mm");
+          shift_mm + " mm");
       continue;
     }
     if (v.require_held_as_planned && !first.held()) {
@@ -250,7 +251,7 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
     const bool accepted = held >= v.min_held;
     say("candidate " + std::to_string(candidate) + ": held in " + std::to_string(held) + " / " +
         std::to_string(outcomes.size()) + " trials" +
-        (accepted ? ", accepted (" + std::to_string(doc.grasps.size() + 1) + " / " +
+        (accepted ? ", accepted (" + std::to_string(accepted_grasps.size() + 1) + " / " +
                         std::to_string(wanted) + ")"
                   : std::string()));
     if (!accepted) continue;
@@ -265,7 +266,7 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
     if (const PhaseResult* close = first.phase("close")) gv.squeeze_shift_m = close->translation_m;
     gv.mass_kg = first.object.mass_kg;
     record.grasps.push_back(gv);
-    doc.grasps.push_back(std::move(*g));
+    accepted_grasps.push_back(std::move(*g));
     ++vs.accepted;
     if (!vs.first_accepted_s) {
       vs.first_accepted_s = seconds_since(start);
@@ -278,24 +279,8 @@ PlanDocument plan_validated_grasps(const PlanJobParams& job, const ValidationPar
   vs.cpu_s = cpu_used();
   stats.total_s = vs.total_s;
   stats.timed_out = vs.budget_spent;
-  if (interrupted) {
-    stats.interrupted = true;
-    doc.interrupted = cancel.reason();
-  }
-  return doc;
-}
-
-std::string validation_stats_line(const ValidationStats& s, int wanted) {
-  std::string line = "accepted " + std::to_string(s.accepted) + " / " + std::to_string(wanted) +
-                     " (" + std::to_string(s.force_closure) + " force-closure candidates of " +
-                     std::to_string(s.attempts) + " attempts: " + std::to_string(s.similar) +
-                     " near copies, " + std::to_string(s.simulated) + " simulated, " +
-                     std::to_string(s.rejected_early) + " rejected early, " +
-                     std::to_string(s.trials_run) + " trials; ";
-  if (s.first_accepted_cpu_s)
-    line += "first accepted after " + fixed(*s.first_accepted_cpu_s, 1) + " s CPU, ";
-  line += fixed(s.cpu_s, 1) + " s CPU in all" + (s.budget_spent ? ", budget spent)" : ")");
-  return line;
+  if (interrupted) stats.interrupted = true;
+  return out;
 }
 
 }  // namespace cordgrasp

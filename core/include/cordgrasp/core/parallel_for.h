@@ -1,6 +1,6 @@
 #pragma once
-// Runs independent tasks on a few threads; results go to per-index slots, so they do not depend
-// on the number of threads.
+// Runs independent tasks on a few threads (std::thread); results go to per-index slots, so they
+// do not depend on the number of threads. Used by the sim library and the jobs.
 #include <algorithm>
 #include <atomic>
 #include <exception>

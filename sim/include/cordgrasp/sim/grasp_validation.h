@@ -1,6 +1,6 @@
 #pragma once
 // What validated planning (plan_validated_grasps.h) records: its settings, the physics verdict
-// on each accepted grasp and the plan's counts; plan.json holds all three (plan_json.h).
+// on each accepted grasp and the plan's counts; plan.json holds all three (jobs/plan_json.h).
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -15,8 +15,10 @@
 
 namespace cordgrasp {
 
-/// Settings of validated planning (docs/algorithm.md §13); the planner's own settings and the
-/// number of grasps wanted (PlanParams::grasps) come from PlanJobParams.
+/// Settings of validated planning (docs/algorithm.md §10a); the planner's own settings and the
+/// number of grasps wanted (PlanParams::grasps) come from PlanJobParams. protocol, physics and
+/// physics_file make the SimParams (the job's part, validated_plan_job.h): the algorithm
+/// (plan_validated_grasps.h) takes those SimParams and reads the rest.
 struct ValidationParams {
   std::string tests = "lift,shake";     ///< physics tests of every trial (validate --tests)
   Protocol protocol = SimParams{}.protocol;  ///< physics protocol preset of every trial
