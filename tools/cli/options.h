@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "cordgrasp/core/hand_description.h"
-#include "cordgrasp/jobs/grasp_validation.h"
+#include "cordgrasp/sim/grasp_validation.h"
 #include "cordgrasp/jobs/parse_name.h"
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/render_options.h"

@@ -10,7 +10,7 @@
 #include <string>
 #include <utility>
 
-#include "cordgrasp/jobs/grasp_validation.h"
+#include "cordgrasp/sim/grasp_validation.h"
 #include "cordgrasp/jobs/plan_job.h"
 
 namespace cordgrasp {
