@@ -15,8 +15,9 @@ mkdir -p "$OUT"
 cat /proc/loadavg > "$OUT/load_start.txt"
 start=$(date +%s.%N)
 "$CG" plan --hand cordgrasp_sah --object mug --seed 7 --grasps 3 -q --out "$OUT/mug.plan.json"
-"$CG" plan --hand schunk_sah --object "$DATA/objects/kit/Pitcher.obj" --scale 2 --seed 7 \
-  --grasps 3 -q --out "$OUT/pitcher.plan.json"
+echo "scale: 2" > "$OUT/scale2.yaml"  # the KIT mesh at about its real size
+"$CG" plan --hand schunk_sah --object "$DATA/objects/kit/Pitcher.obj" --settings "$OUT/scale2.yaml" \
+  --seed 7 --grasps 3 -q --out "$OUT/pitcher.plan.json"
 "$CG" plan --hand cordgrasp_sah --object kettle --planner generic --seed 7 --grasps 2 -q \
   --out "$OUT/kettle_generic.plan.json"
 objects=()

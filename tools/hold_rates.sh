@@ -48,8 +48,11 @@ SETS[ycb]="$(ls "$DATA"/objects/ycb/*.obj)"
 summary=()
 for hand in "${HANDS[@]}"; do
   label="$(basename "$hand" .yaml)"
-  extra=()
-  case "$label" in panda_hand|parallel_gripper) extra=(--soft-finger-radius "$SOFT_FINGER") ;; esac
+  settings="$OUT/$label.settings.yaml"  # the plan's settings (docs/algorithm.md §10c)
+  echo "time_limit_s: $TIME_LIMIT" > "$settings"
+  case "$label" in panda_hand|parallel_gripper)
+    echo "quality: {contact: {soft_finger_radius_m: $SOFT_FINGER}}" >> "$settings" ;;
+  esac
   for set in shipped kit ycb; do
     held=0; total=0; no_plan=0; trials_held=0; trials_total=0
     failed=(0 0 0 0 0 0)   # not held in settle, close, lift, shake, gravity6; preshape overlaps
@@ -58,7 +61,7 @@ for hand in "${HANDS[@]}"; do
       base="$OUT/$label/$set/$name"
       mkdir -p "$(dirname "$base")"
       if ! "$CG" plan --hand "$hand" --object "$obj" --grasps "$GRASPS" \
-          --time-limit "$TIME_LIMIT" --seed 1 "${extra[@]}" --out "$base.plan.json" \
+          --settings "$settings" --seed 1 --out "$base.plan.json" \
           > "$base.plan.txt" 2>&1; then
         no_plan=$((no_plan + 1)); continue
       fi

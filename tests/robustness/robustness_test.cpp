@@ -34,8 +34,27 @@ struct RobustnessCase {
   std::string stdout_regex;
   std::vector<std::string> setup_dirs, setup_files, setup_readonly_dirs;
   std::vector<std::string> absent, may_write;
+  std::vector<std::string> finite;  ///< JSON files written with no NaN or infinity
   bool skip_as_root = false;
 };
+
+/// Keys of sim.json whose null is documented (docs/physics.md, sim_json.h): anywhere else a
+/// null is a NaN or an infinity the JSON writer turned into null.
+const std::set<std::string> kNullableKeys = {
+    "failed_phase", "mass_kg", "held_trials", "trials", "planned_contact_offsets_m",
+    "close_shift_m", "close_turn_rad", "first_force_closure_s"};
+
+/// JSON paths of `j` holding a null outside kNullableKeys (an element of a nullable array too).
+void undocumented_nulls(const nlohmann::json& j, const std::string& path, const std::string& key,
+                        std::vector<std::string>* out) {
+  if (j.is_null() && kNullableKeys.count(key) == 0) out->push_back(path);
+  if (j.is_object())
+    for (const auto& item : j.items())
+      undocumented_nulls(item.value(), path + "." + item.key(), item.key(), out);
+  if (j.is_array())
+    for (size_t i = 0; i < j.size(); ++i)
+      undocumented_nulls(j[i], path + "[" + std::to_string(i) + "]", key, out);
+}
 
 void PrintTo(const RobustnessCase& c, std::ostream* os) { *os << c.id << ": " << c.args; }
 
@@ -68,6 +87,7 @@ std::vector<RobustnessCase> load_cases() {
     }
     c.absent = strings(n["absent"]);
     c.may_write = strings(n["may_write"]);
+    c.finite = strings(n["finite"]);
     c.skip_as_root = n["skip_as_root"] && n["skip_as_root"].as<bool>();
     if (!ids.insert(c.id).second)
       throw std::runtime_error(cases_file() + ": id '" + c.id + "' appears twice");
@@ -158,6 +178,12 @@ TEST_P(Robustness, EndsCleanlyWithOneLineAndNoOutput) {
   for (const std::string& a : c.absent) {
     const fs::path p = expand(a, work.string());
     EXPECT_FALSE(fs::exists(p.is_absolute() ? p : work / p)) << a << " was written" << printed;
+  }
+  for (const std::string& f : c.finite) {
+    ASSERT_TRUE(fs::exists(work / f)) << f << " was not written" << printed;
+    std::vector<std::string> nulls;
+    undocumented_nulls(test::read_json((work / f).string()), f, "", &nulls);
+    for (const std::string& at : nulls) ADD_FAILURE() << "NaN or infinity at " << at << printed;
   }
   std::set<std::string> allowed = before;
   for (const std::string& m : c.may_write) allowed.insert(m);

@@ -18,7 +18,8 @@ for hand in "$@"; do
   for obj in "${objects[@]}"; do
     name="$(basename "$(dirname "$obj")")_$(basename "$obj" .obj)"
     base="$OUT/$hand/$name"
-    "$CG" plan --hand "$hand" --object "$obj" --units auto -n "$GRASPS" --time-limit 10 \
+    echo "time_limit_s: 10" > "$OUT/time_limit.yaml"
+    "$CG" plan --hand "$hand" --object "$obj" --units auto -n "$GRASPS" --settings "$OUT/time_limit.yaml" \
       --out "$base.plan.json" >/dev/null 2>&1 || continue
     "$CG" validate --plan "$base.plan.json" --tests lift,shake --out "$base.sim.json" -q \
       >/dev/null 2>&1 || continue

@@ -5,6 +5,7 @@
 #include "cordgrasp/jobs/region_json.h"
 #include "cordgrasp/jobs/text_format.h"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -340,6 +341,20 @@ nlohmann::json read_plan_json(const std::string& path) {
   if (j.value("format_version", 0) != kFormatVersion)
     throw InputError("read_plan: '" + path + "': unsupported format_version " +
                      j.value("format_version", nlohmann::json(nullptr)).dump());
+  // A relative hand or object path naming a file beside the plan is taken from the plan's
+  // folder (a plan moved with its files); else it stays (a shipped name, or from the cwd).
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  for (const char* input : {"hand", "object"}) {
+    nlohmann::json* entry = j.contains("inputs") && j["inputs"].is_object() &&
+                                    j["inputs"].contains(input) && j["inputs"][input].is_object()
+                                ? &j["inputs"][input]
+                                : nullptr;
+    if (!entry || !entry->contains("path") || !(*entry)["path"].is_string()) continue;
+    const std::filesystem::path recorded = (*entry)["path"].get<std::string>();
+    if (recorded.is_relative() && !recorded.empty() &&
+        std::filesystem::is_regular_file(folder / recorded))
+      (*entry)["path"] = std::filesystem::absolute(folder / recorded).lexically_normal().string();
+  }
   return j;
 }
 

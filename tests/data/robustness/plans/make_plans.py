@@ -49,6 +49,21 @@ def main():
     write("grasps_object.json", lambda p: p.update({"grasps": {"0": g(p)}}))
     write("contacts_number.json", lambda p: g(p).update({"contacts": 2}))
     write("seed_string.json", lambda p: p["parameters"].update({"seed": "1"}))
+    # Physics bad states: objects of 0.1 mm and 10 m (the 5 x 5 x 8 cm box scaled), degenerate
+    # meshes, a hand 1 m from the object, fingers with broken inertials (relative paths: from
+    # this folder).
+    write("object_0.1mm.json", lambda p: p["inputs"]["object"].update({"scale": 0.002}))
+    write("object_10m.json", lambda p: p["inputs"]["object"].update({"scale": 125.0}))
+    write("object_one_triangle.json",
+          lambda p: p["inputs"]["object"].update({"path": "../meshes/one_triangle.obj"}))
+    write("object_collinear.json",
+          lambda p: p["inputs"]["object"].update({"path": "../meshes/collinear.obj"}))
+    write("hand_1m_away.json",
+          lambda p: g(p)["hand_pose"]["position_m"].__setitem__(
+              0, g(p)["hand_pose"]["position_m"][0] + 1.0))
+    for name in ["zero", "nan", "light"]:
+        write("inertials_%s.json" % name, lambda p, n=name: p["inputs"]["hand"].update(
+            {"path": "../hands/inertials/%s.yaml" % n}))
     with open(os.path.join(here, "truncated.json"), "w") as f:
         f.write(json.dumps(base, indent=1)[:300])
 
