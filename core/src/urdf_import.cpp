@@ -57,7 +57,9 @@ urdf::ModelInterfaceSharedPtr parse_urdf(const std::string& urdf_path) {
     handler.first_error = e.what();
   }
   console_bridge::restorePreviousOutputHandler();
-  if (!model) {
+  // urdfdom returns a model even when an element failed to parse and was dropped with the
+  // rest of its link (a value such as "nan": a link without its geometry): an error either way.
+  if (!model || !handler.first_error.empty()) {
     std::string why = handler.first_error.empty() ? "malformed URDF" : handler.first_error;
     while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
     fail(urdf_path, "URDF parse error: " + why);

@@ -19,6 +19,14 @@ namespace cordgrasp {
 
 namespace {
 
+/// Impulse a motor or gear row applied in the last step; 0 for one the solver never ran (its
+/// joint's link and base have no collider, so it is in no island, and Bullet allocates its
+/// rows only when it first solves them).
+double applied_impulse(btMultiBodyConstraint& c) {
+  if (c.getIslandIdA() < 0 && c.getIslandIdB() < 0) return 0.0;
+  return c.getAppliedImpulse(0);
+}
+
 using bullet::from_bt;
 using bullet::to_bt;
 
@@ -507,10 +515,10 @@ void GraspSimulation::Impl::finish(PhaseResult& r, const Eigen::Isometry3d& X_BO
   r.joint_efforts.assign(hand.joints.size(), 0.0);
   for (size_t k = 0; k < hand_body->motors.size(); ++k)
     r.joint_efforts[static_cast<size_t>(hand_body->motor_joint[k])] =
-        hand_body->motors[k]->getAppliedImpulse(0) / dt;
+        applied_impulse(*hand_body->motors[k]) / dt;
   for (size_t k = 0; k < hand_body->gears.size(); ++k)
     r.joint_efforts[static_cast<size_t>(hand_body->gear_joint[k])] =
-        hand_body->gears[k]->getAppliedImpulse(0) / dt;
+        applied_impulse(*hand_body->gears[k]) / dt;
   r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - phase_start).count();
 }
 

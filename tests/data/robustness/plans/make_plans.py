@@ -61,7 +61,7 @@ def main():
     write("hand_1m_away.json",
           lambda p: g(p)["hand_pose"]["position_m"].__setitem__(
               0, g(p)["hand_pose"]["position_m"][0] + 1.0))
-    for name in ["zero", "nan", "light"]:
+    for name in ["zero", "nan", "light", "bare"]:
         write("inertials_%s.json" % name, lambda p, n=name: p["inputs"]["hand"].update(
             {"path": "../hands/inertials/%s.yaml" % n}))
     with open(os.path.join(here, "truncated.json"), "w") as f:
