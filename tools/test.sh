@@ -1,20 +1,24 @@
 #!/usr/bin/env bash
-# Installs missing Debian packages, configures, builds (Release, -j2) and runs the whole
-# ctest suite (the sanitizer pass on request, below).
-# Usage: tools/test.sh [--sanitize] [extra ctest args, e.g. -L unit]
-#   --sanitize               only the sanitizer pass: builds with CORDGRASP_SANITIZE (ASan +
-#                            UBSan) in build-asan/ and runs the labels unit, physics, robustness
-#   CORDGRASP_SANITIZE_PASS=1  also run the sanitizer pass after the normal suite (off in CI:
-#                            ~50 CPU-minutes of ASan build and tests on 2 cores would take
-#                            the CI to about 40 of its 45 minutes)
+# Installs missing Debian packages, configures, builds (Release, -j2) and runs the whole ctest
+# suite, then the sanitizer pass: an ASan + UBSan build (RelWithDebInfo, build-asan/) running
+# the labels unit, physics and robustness. A sanitizer report fails the run.
+# Usage: tools/test.sh [--sanitize | --no-sanitize] [extra ctest args, e.g. -L unit]
+#   --sanitize      only the sanitizer pass
+#   --no-sanitize   only the Release suite (a quick local run)
+#   extra ctest args apply to the pass(es) run; with them the sanitizer pass is skipped unless
+#   asked for (--sanitize)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${CORDGRASP_BUILD_DIR:-$root/build}"
 asan_build="${CORDGRASP_ASAN_BUILD_DIR:-$root/build-asan}"
 
 sanitize_only=0
+sanitize=1
 if [[ "${1:-}" == "--sanitize" ]]; then
   sanitize_only=1
+  shift
+elif [[ "${1:-}" == "--no-sanitize" ]]; then
+  sanitize=0
   shift
 fi
 
@@ -22,6 +26,7 @@ launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 
 sanitizer_pass() {
+  echo "test.sh: sanitizer pass (ASan + UBSan, $asan_build): labels unit, physics, robustness" >&2
   cmake -S "$root" -B "$asan_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCORDGRASP_SANITIZE=ON \
       -DCORDGRASP_BUILD_BENCH=OFF -DCORDGRASP_BUILD_PYTHON=OFF "${launcher[@]}" >/dev/null
   cmake --build "$asan_build" -j2
@@ -37,9 +42,12 @@ if [[ $sanitize_only == 1 ]]; then
   sanitizer_pass "$@"
   exit
 fi
+echo "test.sh: Release build ($build): the whole suite" >&2
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" >/dev/null
 cmake --build "$build" -j2
 (cd "$build" && ctest --output-on-failure -j2 "$@")
-if [[ "${CORDGRASP_SANITIZE_PASS:-0}" == 1 && $# == 0 ]]; then
+if [[ $sanitize == 1 && $# == 0 ]]; then
   sanitizer_pass
+else
+  echo "test.sh: sanitizer pass skipped (--no-sanitize or ctest arguments given)" >&2
 fi
