@@ -3,25 +3,22 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "cordgrasp/core/enum_names.h"
+
 namespace cordgrasp {
 
-const char* to_string(Outcome outcome) {
-  switch (outcome) {
-    case Outcome::kHeld: return "held";
-    case Outcome::kSlipped: return "slipped";
-    case Outcome::kDropped: return "dropped";
-    case Outcome::kUnstable: return "unstable";
-    case Outcome::kNotRun: return "not_run";
-  }
-  return "?";
-}
+namespace {
+constexpr EnumName<Outcome> kOutcomeNames[] = {{Outcome::kHeld, "held"},
+                                               {Outcome::kSlipped, "slipped"},
+                                               {Outcome::kDropped, "dropped"},
+                                               {Outcome::kUnstable, "unstable"},
+                                               {Outcome::kNotRun, "not_run"}};
+}  // namespace
+
+const char* to_string(Outcome outcome) { return enum_to_string(outcome, kOutcomeNames); }
 
 Outcome parse_outcome(const std::string& text) {
-  for (Outcome o : {Outcome::kHeld, Outcome::kSlipped, Outcome::kDropped, Outcome::kUnstable,
-                    Outcome::kNotRun})
-    if (text == to_string(o)) return o;
-  throw std::invalid_argument("unknown outcome '" + text +
-                              "' (allowed: held, slipped, dropped, unstable, not_run)");
+  return parse_enum(text, kOutcomeNames, "outcome");
 }
 
 const PhaseResult* SimResult::phase(const std::string& name) const {
