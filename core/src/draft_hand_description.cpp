@@ -518,6 +518,12 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     << "# docs/hand-description.md, \"Drafting a description\").\n";
   y << "format: 1\nname: " << quoted(hand.name) << "\n";
   y << "urdf: " << quoted(rel.empty() ? urdf_rel.string() : rel.string()) << "\n";
+  if (!options.package_paths.empty()) {  // so that every command finds them again
+    y << "package_paths:\n";
+    for (const auto& [package, dir] : options.package_paths)
+      y << "  " << quoted(package) << ": " << quoted(fs::absolute(dir).lexically_normal().string())
+        << "\n";
+  }
   const Eigen::Vector3d rpy_zyx = hand.gcp.X_LG.linear().eulerAngles(2, 1, 0);
   y << "gcp:\n  link: " << quoted(hand.links[palm].name) << "\n  xyz: "
     << vec(hand.gcp.X_LG.translation()) << "\n  rpy: "

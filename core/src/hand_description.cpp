@@ -63,7 +63,8 @@ class Description {
     static const std::set<std::string> kKeys = {"format",    "name",        "urdf",
                                                 "gcp",       "preshape",    "actors",
                                                 "couplings", "thumb_links", "palm_width_m",
-                                                "soft_finger_radius_m", "palm_normal"};
+                                                "soft_finger_radius_m", "palm_normal",
+                                                "package_paths"};
     for (const auto& kv : root_) {
       const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : "?";
       if (!kKeys.count(key)) error(kv.first, "unknown key " + in_quotes(key));
@@ -301,7 +302,21 @@ HandModel load_hand(const std::string& name_or_path, const HandLoadOptions& opti
     d.error(urdf, "URDF " + in_quotes(urdf_text) + " not found (looked for " +
                       in_quotes(urdf_path.string()) + ")");
 
-  HandModel hand = import_urdf(urdf_path.string(), options);
+  // package:// directories: the options', then the description's (relative to this file).
+  HandLoadOptions with_description = options;
+  if (const YAML::Node pkgs = d.root()["package_paths"]) {
+    if (!pkgs.IsMap()) d.error(pkgs, "package_paths must be a mapping NAME: DIR");
+    for (const auto& kv : pkgs) {
+      const std::string package = d.text(kv.first, "package_paths");
+      fs::path dir(d.text(kv.second, "package_paths." + package));
+      if (dir.is_relative()) dir = fs::path(desc_path).parent_path() / dir;
+      if (!fs::is_directory(dir))
+        d.error(kv.second, "package_paths." + package + ": " + in_quotes(dir.string()) +
+                               " is not a directory");
+      with_description.package_paths.emplace(package, dir.lexically_normal().string());
+    }
+  }
+  HandModel hand = import_urdf(urdf_path.string(), with_description);
   hand.name = hand_name;
   hand.description_path = desc_path;
   read_gcp(hand, d);

@@ -2,8 +2,11 @@
 // names the package.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
+#include "cordgrasp/core/draft_hand_description.h"
+#include "test_files.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
@@ -43,6 +46,42 @@ TEST(PackagePathCli, HandInitResolvesPackageUrisThroughIt) {
       package_dir());
   EXPECT_EQ(with.output.find("not found"), std::string::npos) << with.output;
   EXPECT_NE(with.output.find("no joint closes any finger"), std::string::npos) << with.output;
+}
+
+// A description's package_paths (DIR relative to the file) serve every command, plan, validate
+// and run included, without the option; hand init --package-path writes them.
+TEST(PackagePathCli, ADescriptionRecordsItsPackagePaths) {
+  const test::TempDir dir;
+  const std::string relative =
+      std::filesystem::relative(package_dir(), dir.path).lexically_normal().string();
+  const std::string desc = dir.write(
+      "with_packages.yaml",
+      "format: 1\nurdf: " + test::test_data("hands/package_uri/package_uri.urdf") +
+          "\ngcp: {link: palm, xyz: [0.02, 0, 0.12]}\n"
+          "actors: [{name: finger, joints: {knuckle: 1}}]\n"
+          "package_paths: {" + kPackage + ": " + relative + "}\n");
+  const test::CommandResult r = test::run_cordgrasp("info --hand " + desc);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string bad = dir.write(
+      "bad_dir.yaml",
+      "format: 1\nurdf: " + test::test_data("hands/package_uri/package_uri.urdf") +
+          "\ngcp: {link: palm, xyz: [0.02, 0, 0.12]}\n"
+          "actors: [{name: finger, joints: {knuckle: 1}}]\n"
+          "package_paths: {" + kPackage + ": no/such/dir}\n");
+  const test::CommandResult refused = test::run_cordgrasp("info --hand " + bad);
+  EXPECT_NE(refused.exit_code, 0);
+  EXPECT_NE(refused.output.find("package_paths." + kPackage), std::string::npos)
+      << refused.output;
+  EXPECT_NE(refused.output.find("is not a directory"), std::string::npos) << refused.output;
+
+  // A draft made with package directories records them.
+  HandLoadOptions options;
+  options.package_paths[kPackage] = package_dir();
+  const HandDraft draft = draft_hand_description(
+      test::source_dir() + "/assets/hands/parallel_gripper/parallel_gripper.urdf",
+      dir.file("draft.yaml"), options);
+  EXPECT_NE(draft.yaml.find("package_paths:\n  \"" + kPackage + "\": "), std::string::npos)
+      << draft.yaml;
 }
 
 TEST(PackagePathCli, AnotherPackageDoesNotHelp) {
