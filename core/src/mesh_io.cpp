@@ -152,6 +152,21 @@ std::string point_text(const Eigen::Vector3d& p) {
   return out.str();
 }
 
+// assimp 5.2's PLY reader never returns from a header without an "end_header" line: a file
+// that starts like PLY must have one (the line alone, spaces, tabs and CR aside).
+void check_ply_header(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!std::getline(in, line) || line.compare(0, 3, "ply") != 0) return;
+  while (std::getline(in, line)) {
+    const size_t begin = line.find_first_not_of(" \t\r");
+    const size_t end = line.find_last_not_of(" \t\r");
+    if (begin != std::string::npos && line.compare(begin, end + 1 - begin, "end_header") == 0)
+      return;
+  }
+  fail(path, "PLY header without an 'end_header' line");
+}
+
 }  // namespace
 
 Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoadReport* report) {
@@ -165,6 +180,7 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
     if (!probe) fail(path, "cannot open for reading");
   }
   if (fs::file_size(path, ec) == 0 && !ec) fail(path, "empty file (0 bytes)");
+  check_ply_header(path);
   Assimp::Importer importer;
   std::string ext = fs::path(path).extension().string();
   if (ext.empty() || !importer.IsExtensionSupported(ext))
@@ -173,7 +189,10 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   auto* io = new MeshFolderIOSystem(path);
   importer.SetIOHandler(io);  // the importer owns it
-  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate);
+  // Validation first: a loader's inconsistent output (an OFF file with fewer faces than its
+  // header) would otherwise reach the triangulation step, whose assertion aborts the process.
+  const aiScene* scene =
+      importer.ReadFile(path, aiProcess_ValidateDataStructure | aiProcess_Triangulate);
   warn_refused_files(path, io->refused());
   if (!scene || !scene->mRootNode)
     fail(path, std::string("cannot parse: ") + importer.GetErrorString());
