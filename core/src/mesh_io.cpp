@@ -8,6 +8,7 @@
 #include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -152,13 +153,21 @@ std::string point_text(const Eigen::Vector3d& p) {
   return out.str();
 }
 
-// assimp 5.2's PLY reader never returns from a header without an "end_header" line: a file
-// that starts like PLY must have one (the line alone, spaces, tabs and CR aside).
-void check_ply_header(const std::string& path) {
+// assimp 5.2's PLY reader never returns from a header without an "end_header" line, and
+// allocates (and fills) an element's count from the header before reading it: a file that
+// starts like PLY must have that line (alone, spaces, tabs and CR aside), and no element may
+// claim more entries than the file has bytes.
+void check_ply_header(const std::string& path, uintmax_t file_bytes) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
   if (!std::getline(in, line) || line.compare(0, 3, "ply") != 0) return;
   while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string keyword, name;
+    unsigned long long count = 0;
+    if (words >> keyword >> name >> count && keyword == "element" && count > file_bytes)
+      fail(path, "PLY element '" + name + "' claims " + std::to_string(count) +
+                     " entries, more than the file's " + std::to_string(file_bytes) + " bytes");
     const size_t begin = line.find_first_not_of(" \t\r");
     const size_t end = line.find_last_not_of(" \t\r");
     if (begin != std::string::npos && line.compare(begin, end + 1 - begin, "end_header") == 0)
@@ -179,8 +188,9 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
     std::ifstream probe(path, std::ios::binary);
     if (!probe) fail(path, "cannot open for reading");
   }
-  if (fs::file_size(path, ec) == 0 && !ec) fail(path, "empty file (0 bytes)");
-  check_ply_header(path);
+  const uintmax_t file_bytes = fs::file_size(path, ec);
+  if (file_bytes == 0 && !ec) fail(path, "empty file (0 bytes)");
+  check_ply_header(path, file_bytes);
   Assimp::Importer importer;
   std::string ext = fs::path(path).extension().string();
   if (ext.empty() || !importer.IsExtensionSupported(ext))
