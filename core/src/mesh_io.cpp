@@ -200,9 +200,27 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   auto* io = new MeshFolderIOSystem(path);
   importer.SetIOHandler(io);  // the importer owns it
   // Validation first: a loader's inconsistent output (an OFF file with fewer faces than its
-  // header) would otherwise reach the triangulation step, whose assertion aborts the process.
-  const aiScene* scene =
-      importer.ReadFile(path, aiProcess_ValidateDataStructure | aiProcess_Triangulate);
+  // header) would otherwise reach the triangulation step, whose assertion aborts the process;
+  // so would a mesh flagged as holding polygons that holds none, or only faces without
+  // vertices (a malformed PLY): each mesh's primitive types are set from its faces first.
+  const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+  if (scene && scene->mRootNode) {
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+      aiMesh& am = *scene->mMeshes[m];
+      unsigned types = 0;
+      for (unsigned f = 0; f < am.mNumFaces; ++f) {
+        const unsigned n = am.mFaces[f].mNumIndices;
+        types |= n == 0   ? 0u
+                 : n == 1 ? aiPrimitiveType_POINT
+                 : n == 2 ? aiPrimitiveType_LINE
+                 : n == 3 ? aiPrimitiveType_TRIANGLE
+                          : aiPrimitiveType_POLYGON;
+      }
+      if (types == 0 && am.mNumFaces > 0) fail(path, "faces without vertices");
+      am.mPrimitiveTypes = types;
+    }
+    scene = importer.ApplyPostProcessing(aiProcess_Triangulate);
+  }
   warn_refused_files(path, io->refused());
   if (!scene || !scene->mRootNode)
     fail(path, std::string("cannot parse: ") + importer.GetErrorString());
