@@ -199,24 +199,26 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   auto* io = new MeshFolderIOSystem(path);
   importer.SetIOHandler(io);  // the importer owns it
-  // Validation first: a loader's inconsistent output (an OFF file with fewer faces than its
-  // header) would otherwise reach the triangulation step, whose assertion aborts the process;
-  // so would a mesh flagged as holding polygons that holds none, or only faces without
-  // vertices (a malformed PLY): each mesh's primitive types are set from its faces first.
-  const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+  // Read, check the faces, then triangulate: a loader can leave faces without vertices (an OFF
+  // file with fewer faces than its header, a malformed PLY) or index past the vertices, and
+  // flag polygons in a mesh that holds none; assimp's triangulation asserts (aborting the
+  // process) on the first and the last. Each mesh's primitive types are set from its faces.
+  const aiScene* scene = importer.ReadFile(path, 0);
   if (scene && scene->mRootNode) {
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
       aiMesh& am = *scene->mMeshes[m];
       unsigned types = 0;
       for (unsigned f = 0; f < am.mNumFaces; ++f) {
-        const unsigned n = am.mFaces[f].mNumIndices;
-        types |= n == 0   ? 0u
-                 : n == 1 ? aiPrimitiveType_POINT
+        const aiFace& face = am.mFaces[f];
+        if (face.mNumIndices == 0 || !face.mIndices) fail(path, "a face without vertices");
+        for (unsigned k = 0; k < face.mNumIndices; ++k)
+          if (face.mIndices[k] >= am.mNumVertices) fail(path, "a face index past the vertices");
+        const unsigned n = face.mNumIndices;
+        types |= n == 1   ? aiPrimitiveType_POINT
                  : n == 2 ? aiPrimitiveType_LINE
                  : n == 3 ? aiPrimitiveType_TRIANGLE
                           : aiPrimitiveType_POLYGON;
       }
-      if (types == 0 && am.mNumFaces > 0) fail(path, "faces without vertices");
       am.mPrimitiveTypes = types;
     }
     scene = importer.ApplyPostProcessing(aiProcess_Triangulate);
