@@ -20,6 +20,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
+#include <vector>
 
 #include "cordgrasp/core/atomic_file.h"
 #include "cordgrasp/core/enum_names.h"
@@ -176,6 +177,29 @@ void check_ply_header(const std::string& path, uintmax_t file_bytes) {
   fail(path, "PLY header without an 'end_header' line");
 }
 
+// assimp 5.2's OFF reader crashes on a face line with no vertices ("0"): a file that starts
+// like OFF must give each face a vertex count >= 1 and indices below its vertex count.
+void check_off_faces(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::vector<std::string> lines;  // non-empty lines without comments
+  for (std::string line; std::getline(in, line);) {
+    line = line.substr(0, line.find('#'));
+    if (line.find_first_not_of(" \t\r") != std::string::npos) lines.push_back(line);
+  }
+  if (lines.empty() || lines[0].find("OFF") == std::string::npos) return;
+  std::istringstream counts(lines.size() > 1 ? lines[1] : "");
+  long long vertices = 0, faces = 0;
+  if (!(counts >> vertices >> faces) || vertices < 0 || faces < 0) return;  // assimp's to judge
+  for (long long f = 0; f < faces && size_t(2 + vertices + f) < lines.size(); ++f) {
+    std::istringstream face(lines[size_t(2 + vertices + f)]);
+    long long n = 0;
+    if (!(face >> n)) return;
+    if (n < 1) fail(path, "a face without vertices");
+    for (long long k = 0, index = 0; k < n && face >> index; ++k)
+      if (index < 0 || index >= vertices) fail(path, "a face index past the vertices");
+  }
+}
+
 }  // namespace
 
 Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoadReport* report) {
@@ -191,6 +215,7 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   const uintmax_t file_bytes = fs::file_size(path, ec);
   if (file_bytes == 0 && !ec) fail(path, "empty file (0 bytes)");
   check_ply_header(path, file_bytes);
+  check_off_faces(path);
   Assimp::Importer importer;
   std::string ext = fs::path(path).extension().string();
   if (ext.empty() || !importer.IsExtensionSupported(ext))
