@@ -23,6 +23,8 @@ PKGS=(
   python3-numpy python3-pytest            # its arrays and its test suite
   python3-matplotlib                      # tools/results.sh: the plots of docs/results.md
   libmujoco-dev                           # tests/export and mujoco_check: MuJoCo 2.2.2
+  clang                                   # CORDGRASP_FUZZ=ON: the parsers' libFuzzer targets
+  libclang-rt-14-dev                      # clang 14's libFuzzer, ASan and UBSan runtimes
 )
 
 missing=()

@@ -8,6 +8,7 @@
 #include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +20,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
+#include <vector>
 
 #include "cordgrasp/core/atomic_file.h"
 #include "cordgrasp/core/enum_names.h"
@@ -152,6 +154,52 @@ std::string point_text(const Eigen::Vector3d& p) {
   return out.str();
 }
 
+// assimp 5.2's PLY reader never returns from a header without an "end_header" line, and
+// allocates (and fills) an element's count from the header before reading it: a file that
+// starts like PLY must have that line (alone, spaces, tabs and CR aside), and no element may
+// claim more entries than the file has bytes.
+void check_ply_header(const std::string& path, uintmax_t file_bytes) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!std::getline(in, line) || line.compare(0, 3, "ply") != 0) return;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string keyword, name;
+    unsigned long long count = 0;
+    if (words >> keyword >> name >> count && keyword == "element" && count > file_bytes)
+      fail(path, "PLY element '" + name + "' claims " + std::to_string(count) +
+                     " entries, more than the file's " + std::to_string(file_bytes) + " bytes");
+    const size_t begin = line.find_first_not_of(" \t\r");
+    const size_t end = line.find_last_not_of(" \t\r");
+    if (begin != std::string::npos && line.compare(begin, end + 1 - begin, "end_header") == 0)
+      return;
+  }
+  fail(path, "PLY header without an 'end_header' line");
+}
+
+// assimp 5.2's OFF reader crashes on a face line with no vertices ("0"): a file that starts
+// like OFF must give each face a vertex count >= 1 and indices below its vertex count.
+void check_off_faces(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::vector<std::string> lines;  // non-empty lines without comments
+  for (std::string line; std::getline(in, line);) {
+    line = line.substr(0, line.find('#'));
+    if (line.find_first_not_of(" \t\r") != std::string::npos) lines.push_back(line);
+  }
+  if (lines.empty() || lines[0].find("OFF") == std::string::npos) return;
+  std::istringstream counts(lines.size() > 1 ? lines[1] : "");
+  long long vertices = 0, faces = 0;
+  if (!(counts >> vertices >> faces) || vertices < 0 || faces < 0) return;  // assimp's to judge
+  for (long long f = 0; f < faces && size_t(2 + vertices + f) < lines.size(); ++f) {
+    std::istringstream face(lines[size_t(2 + vertices + f)]);
+    long long n = 0;
+    if (!(face >> n)) return;
+    if (n < 1) fail(path, "a face without vertices");
+    for (long long k = 0, index = 0; k < n && face >> index; ++k)
+      if (index < 0 || index >= vertices) fail(path, "a face index past the vertices");
+  }
+}
+
 }  // namespace
 
 Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoadReport* report) {
@@ -164,7 +212,10 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
     std::ifstream probe(path, std::ios::binary);
     if (!probe) fail(path, "cannot open for reading");
   }
-  if (fs::file_size(path, ec) == 0 && !ec) fail(path, "empty file (0 bytes)");
+  const uintmax_t file_bytes = fs::file_size(path, ec);
+  if (file_bytes == 0 && !ec) fail(path, "empty file (0 bytes)");
+  check_ply_header(path, file_bytes);
+  check_off_faces(path);
   Assimp::Importer importer;
   std::string ext = fs::path(path).extension().string();
   if (ext.empty() || !importer.IsExtensionSupported(ext))
@@ -173,7 +224,30 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   auto* io = new MeshFolderIOSystem(path);
   importer.SetIOHandler(io);  // the importer owns it
-  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate);
+  // Read, check the faces, then triangulate: a loader can leave faces without vertices (an OFF
+  // file with fewer faces than its header, a malformed PLY) or index past the vertices, and
+  // flag polygons in a mesh that holds none; assimp's triangulation asserts (aborting the
+  // process) on the first and the last. Each mesh's primitive types are set from its faces.
+  const aiScene* scene = importer.ReadFile(path, 0);
+  if (scene && scene->mRootNode) {
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+      aiMesh& am = *scene->mMeshes[m];
+      unsigned types = 0;
+      for (unsigned f = 0; f < am.mNumFaces; ++f) {
+        const aiFace& face = am.mFaces[f];
+        if (face.mNumIndices == 0 || !face.mIndices) fail(path, "a face without vertices");
+        for (unsigned k = 0; k < face.mNumIndices; ++k)
+          if (face.mIndices[k] >= am.mNumVertices) fail(path, "a face index past the vertices");
+        const unsigned n = face.mNumIndices;
+        types |= n == 1   ? aiPrimitiveType_POINT
+                 : n == 2 ? aiPrimitiveType_LINE
+                 : n == 3 ? aiPrimitiveType_TRIANGLE
+                          : aiPrimitiveType_POLYGON;
+      }
+      am.mPrimitiveTypes = types;
+    }
+    scene = importer.ApplyPostProcessing(aiProcess_Triangulate);
+  }
   warn_refused_files(path, io->refused());
   if (!scene || !scene->mRootNode)
     fail(path, std::string("cannot parse: ") + importer.GetErrorString());

@@ -64,7 +64,12 @@ urdf::ModelInterfaceSharedPtr parse_urdf(const std::string& urdf_path) {
     while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
     fail(urdf_path, "URDF parse error: " + why);
   }
-  return model;
+  // A link owns its children (shared_ptr): joints closing a cycle, which import_urdf refuses,
+  // would keep the model alive forever. The pointer returned drops those links first.
+  return urdf::ModelInterfaceSharedPtr(model.get(), [model](urdf::ModelInterface* m) mutable {
+    for (auto& name_link : m->links_) name_link.second->child_links.clear();
+    model.reset();
+  });
 }
 
 Eigen::Isometry3d to_isometry(const urdf::Pose& pose) {

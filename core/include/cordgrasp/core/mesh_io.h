@@ -34,7 +34,9 @@ struct MeshLoadReport {
 /// below 1e-7 of the bounding-box diagonal, i.e. zero at float precision) are dropped and
 /// counted in `report`.
 /// @throws InputError "load_mesh: '<path>': <problem>" for a missing/unreadable/empty file,
-///         unknown format, zero triangles, NaN/inf coordinates or all-degenerate geometry;
+///         unknown format, zero triangles, NaN/inf coordinates or all-degenerate geometry,
+///         a face without vertices or indexing past them, a PLY header without "end_header"
+///         or with an element count above the file size;
 ///         std::invalid_argument when options.scale is not finite and > 0.
 Mesh load_mesh(const std::string& path, const MeshLoadOptions& options = {},
                MeshLoadReport* report = nullptr);
