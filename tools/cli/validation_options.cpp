@@ -9,11 +9,11 @@ namespace cordgrasp::cli {
 void add_trial_nudge_options(CLI::App* cmd, PerturbationParams& p) {
   cmd->add_option("--trial-offset", p.offset_m,
                   "Hand offset of the nudged trials (all but the first) [m], random direction")
-      ->check(number_in(0.0, 0.1))
+      ->check(settings_number("validation.perturbation.offset_m"))
       ->capture_default_str();
   cmd->add_option("--trial-turn", p.turn_rad,
                   "Hand turn of the nudged trials about the GCP [rad], random axis")
-      ->check(number_in(0.0, 0.5))
+      ->check(settings_number("validation.perturbation.turn_rad"))
       ->capture_default_str();
 }
 
@@ -26,11 +26,11 @@ void add_validation_options(CLI::App* cmd, ValidationParams& v) {
   cmd->add_option("--trials", v.trials,
                   "Physics trials per candidate: as planned, then nudged by --trial-offset and "
                   "--trial-turn")
-      ->check(whole_number_in(1, 1000))
+      ->check(settings_whole_number("validation.trials"))
       ->capture_default_str();
   cmd->add_option("--min-held", v.min_held,
                   "A candidate is accepted when held in at least this many trials")
-      ->check(whole_number_in(1, 1000))
+      ->check(settings_whole_number("validation.min_held"))
       ->capture_default_str();
   cmd->add_option("--require-held-as-planned", v.require_held_as_planned,
                   "A candidate must hold in its first trial, as planned (the grasp plan.json "
@@ -39,12 +39,12 @@ void add_validation_options(CLI::App* cmd, ValidationParams& v) {
   cmd->add_option("--budget", v.budget_s,
                   "CPU budget of planning and physics together, all threads [s] (replaces "
                   "--time-limit)")
-      ->check(number_in(1e-3, 1e6))
+      ->check(settings_number("validation.budget_s"))
       ->capture_default_str();
   cmd->add_option("--squeeze-shift-limit", v.squeeze_shift_limit_m,
                   "Candidates whose object moves farther while closing are dropped before lift "
                   "[m]; 0: off")
-      ->check(number_in(0.0, 10.0))
+      ->check(settings_number("validation.squeeze_shift_limit_m"))
       ->capture_default_str();
   add_trial_nudge_options(cmd, v.perturbation);
   cmd->add_option("--trial-seed", v.trial_seed, "Seed of the nudges' random directions")
@@ -76,17 +76,17 @@ void add_validate_option(CLI::App* cmd, bool* validate, Protocol* protocol) {
 void add_sim_override_options(CLI::App* cmd, SimOverrides& o, const std::string& recorded_note) {
   cmd->add_option("--mass", o.mass_kg, "Object mass [kg] (default: " + recorded_note +
                                            "from the volume, docs/physics.md §2)")
-      ->check(number_in(1e-6, 1e4));
+      ->check(settings_number("validation.physics.mass_kg"));
   cmd->add_option("--density", o.density_kgm3,
                   "Object density [kg/m^3] (default: " + recorded_note +
                       format_number(SimParams{}.density_kgm3) + ")")
-      ->check(number_in(1.0, 1e5));
+      ->check(settings_number("validation.physics.density_kgm3"));
   cmd->add_option("--squeeze-weight", o.squeeze_weight_factor,
                   "Grasp force in proportion to the object's weight: the fingers' squeeze "
                   "efforts are scaled down together until each planned contact is pressed with "
                   "this x m*g/mu (0: the joints' effort limits; default: " + recorded_note +
                       format_number(SimParams{}.squeeze_weight_factor) + ")")
-      ->check(number_in(0.0, 1e4));
+      ->check(settings_number("validation.physics.squeeze_weight_factor"));
 }
 
 }  // namespace cordgrasp::cli
