@@ -25,6 +25,9 @@ PKGS=(
   libmujoco-dev                           # tests/export and mujoco_check: MuJoCo 2.2.2
   clang                                   # CORDGRASP_FUZZ=ON: the parsers' libFuzzer targets
   libclang-rt-14-dev                      # clang 14's libFuzzer, ASan and UBSan runtimes
+  libwebp-dev                             # render: animated WebP of the physics (WebPAnimEncoder)
+  libjs-three                             # report.html: three.js r111 for the 3D view (copied)
+  chromium                                # the `browser` tests: report.html in headless Chromium
 )
 
 missing=()

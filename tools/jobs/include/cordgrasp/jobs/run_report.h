@@ -9,10 +9,22 @@
 
 namespace cordgrasp {
 
+/// The object in the hand at one moment of the physics (the trace of `validate --trace`).
+struct TraceSample {
+  std::string phase;             ///< close, lift, shake, gravity6 (segments: "shake x", ...)
+  bool phase_end = false;        ///< the last sample of a phase (or segment)
+  double sim_time_s = 0.0;       ///< simulated time since the world was built [s]
+  double object_shift_m = 0.0;   ///< shift of the object's centre of mass from its reference
+  double object_turn_rad = 0.0;  ///< turn of the object from its reference
+  int contacts = 0;              ///< hand–object contacts
+};
+
 /// Pictures of one grasp, file names relative to the report's folder.
 struct GraspPictures {
   std::string planned;                 ///< the planned grasp with cords and contacts
   std::vector<std::string> snapshots;  ///< physics frames (after close, lift, shake)
+  std::string animation;               ///< animated WebP of the physics ("" if none)
+  std::vector<TraceSample> trace;      ///< the physics over time (empty if none)
 };
 
 /// Everything report.md shows.
