@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <tuple>
 
 #include "commands.h"
 #include "options.h"
@@ -9,6 +10,7 @@
 #include "cordgrasp/core/assets.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/jobs/physics_settings.h"
+#include "cordgrasp/jobs/render_options.h"
 #include "cordgrasp/jobs/text_format.h"
 #include "cordgrasp/jobs/validate_job.h"
 #include "cordgrasp/sim/sim_params.h"
@@ -22,6 +24,8 @@ void add_validate_command(CLI::App& app) {
     bool print_physics = false;
   };
   auto opt = std::make_shared<Options>();
+  auto video_size = std::make_shared<std::string>(std::to_string(VideoParams{}.width_px) + "x" +
+                                                  std::to_string(VideoParams{}.height_px));
   CLI::App* cmd =
       app.add_subcommand("validate", "Check planned grasps in Bullet physics (lift, shake, "
                                      "gravity in six directions)");
@@ -62,9 +66,18 @@ void add_validate_command(CLI::App& app) {
                   "at every phase end (first trial of each grasp)");
   cmd->add_option("--snapshots", opt->job.snapshots_dir,
                   "Existing folder: one PNG per grasp and phase end, grasp_K_<phase>.png");
+  cmd->add_option("--video", opt->job.video_dir,
+                  "Existing folder: one animated WebP per grasp, grasp_K.webp, of its physics "
+                  "played in simulated time (first trial)");
+  cmd->add_option("--video-size", *video_size, "Animation frame size WxH [px]")
+      ->capture_default_str();
+  cmd->add_option("--video-fps", opt->job.video.frame_rate_hz, "Animation frames per second")
+      ->check(CLI::Range(1.0, 100.0))
+      ->capture_default_str();
   cmd->add_option("--out", opt->job.out, "Output sim.json (required unless --print-physics)");
   cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
-  cmd->callback([opt]() {
+  cmd->callback([opt, video_size]() {
+    std::tie(opt->job.video.width_px, opt->job.video.height_px) = parse_image_size(*video_size);
     if (opt->print_physics) {
       std::cout << physics_settings_yaml(validate_job_physics(opt->job));
       return;
@@ -74,8 +87,11 @@ void add_validate_command(CLI::App& app) {
     cb.grasp_line = [](const std::string& line) { std::cout << line << '\n' << std::flush; };
     if (!opt->quiet)
       cb.progress = [](const std::string& stage, int done, int total) {
-        std::fprintf(stderr, "validate: %s%d/%d grasps\n",
-                     stage == "grasps" ? "" : "trials of ", done, total);
+        if (stage == "animations")
+          std::fprintf(stderr, "validate: animations %d/%d\n", done, total);
+        else
+          std::fprintf(stderr, "validate: %s%d/%d grasps\n",
+                       stage == "grasps" ? "" : "trials of ", done, total);
       };
     install_interrupt_handlers();
     opt->job.cancel = interrupt_token();

@@ -12,6 +12,7 @@
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/object_meshes.h"
 #include "cordgrasp/jobs/hand_scene.h"
+#include "cordgrasp/jobs/physics_animation.h"
 #include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/physics_settings.h"
 #include "cordgrasp/jobs/text_format.h"
@@ -47,8 +48,12 @@ struct RunInputs {
   std::string plan_path, report_path, sim_path;
 };
 
-/// Physics frames of each grasp (ends of close, lift, shake) for the pictures.
-using GraspFrames = std::vector<std::vector<SnapshotFrame>>;
+/// Each grasp's physics samples (every 1 / video.frame_rate_hz and at phase ends) for the
+/// pictures, the animations and the trace, with the physics settings they were taken with.
+struct GraspSamples {
+  std::vector<std::vector<PhaseSnapshot>> grasps;
+  SimParams params;
+};
 
 RunInputs load_run_inputs(const RunParams& opt) {
   RunInputs in;
@@ -109,9 +114,9 @@ void require_grasps(const RunInputs& in, const RunReport& report) {
 
 /// 2. Physics of the plan as written (poses as quaternions, so that `cordgrasp validate
 /// --plan plan.json` reproduces these outcomes exactly); writes sim.json and keeps the
-/// pictured phase ends in `frames`.
+/// samples for the pictures in `samples`.
 SimDocument physics_stage(const RunParams& opt, const RunInputs& in, const RunProgress& progress,
-                          GraspFrames* frames, RunReport* report) {
+                          GraspSamples* samples, RunReport* report) {
   const PlanDocument written = plan_from_json(read_plan_json(in.plan_path), in.hand,
                                               in.plan_path);
   PhysicsChoice choice;
@@ -120,16 +125,13 @@ SimDocument physics_stage(const RunParams& opt, const RunInputs& in, const RunPr
   choice.file = opt.validation.physics_file;
   SimParams params = physics_settings(plan_contact_model(written), choice);
   if (opt.validate) params.squeeze_shift_limit_m = opt.validation.squeeze_shift_limit_m;
+  if (opt.render) params.trace_interval_s = 1.0 / opt.video.frame_rate_hz;  // no effect on physics
+  samples->params = params;
   const auto t = Clock::now();
   const auto hooks = [&](int k) -> PhaseHook {
     if (!opt.render) return {};
-    return [frames, k](const PhaseSnapshot& s) {
-      if (!s.phase_end || !pictured_phase(s.phase)) return;
-      SnapshotFrame f;
-      f.X_WL = s.X_WL;
-      f.X_WO = s.X_WO;
-      f.name = s.phase;
-      (*frames)[static_cast<size_t>(k)].push_back(std::move(f));
+    return [samples, k](const PhaseSnapshot& s) {
+      samples->grasps[static_cast<size_t>(k)].push_back(s);
     };
   };
   SimDocument sim = validate_plan(
@@ -171,7 +173,7 @@ Image physics_strip(Renderer& renderer, const RunInputs& in, const RenderParams&
 /// 3. Pictures: each planned grasp (cords, contacts), its physics frames, a contact sheet.
 /// Returns the number of grasps pictured (fewer than planned when cancelled).
 int render_stage(const RunParams& opt, const RunInputs& in, const RunProgress& progress,
-                 const GraspFrames& frames, RunReport* report) {
+                 const GraspSamples& samples, RunReport* report) {
   const auto t = Clock::now();
   const PlanDocument& plan = report->plan;
   const int n = static_cast<int>(plan.grasps.size());
@@ -199,12 +201,26 @@ int render_stage(const RunParams& opt, const RunInputs& in, const RunProgress& p
       tiles.push_back(renderer.render(scene, params));
       captions.push_back("#" + std::to_string(k) + " · " + quality);
     }
-    const auto& f = frames[static_cast<size_t>(k)];
+    const std::vector<PhaseSnapshot>& s =
+        samples.grasps.empty() ? std::vector<PhaseSnapshot>{} : samples.grasps[size_t(k)];
+    std::vector<SnapshotFrame> f;
+    for (const PhaseSnapshot& x : s) {
+      if (x.phase_end && pictured_phase(x.phase)) f.push_back({x.X_WL, x.X_WO, "", x.phase});
+      pics.trace.push_back({x.phase, x.phase_end, x.sim_time_s, x.object_shift_m,
+                            x.object_turn_rad, x.contact_count});
+    }
     if (!f.empty()) {
+      const SimResult& result = report->sim->results[static_cast<size_t>(k)];
       pics.snapshots.push_back("grasp_" + std::to_string(k) + "_physics.png");
       write_png((fs::path(opt.out_dir) / pics.snapshots.back()).string(),
-                physics_strip(renderer, in, params, k,
-                              report->sim->results[static_cast<size_t>(k)], f));
+                physics_strip(renderer, in, params, k, result, f));
+      pics.animation = "grasp_" + std::to_string(k) + ".webp";
+      write_file_atomically((fs::path(opt.out_dir) / pics.animation).string(),
+                            physics_animation(renderer, in.hand, in.mesh, s, result,
+                                              samples.params,
+                                              in.mesh->name + " · " + in.hand.name +
+                                                  " · grasp " + std::to_string(k),
+                                              opt.video));
     }
     report->pictures.push_back(pics);
     progress("render: grasp " + std::to_string(k + 1) + "/" + std::to_string(n));
@@ -252,9 +268,10 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
                                  std::to_string(plan.stats.attempts) + " attempts"));
   require_grasps(in, report);
 
-  GraspFrames frames(static_cast<size_t>(n));
+  GraspSamples samples;
+  samples.grasps.resize(static_cast<size_t>(n));
   if (in.physics) {
-    report.sim = physics_stage(opt, in, progress, &frames, &report);
+    report.sim = physics_stage(opt, in, progress, &samples, &report);
     out.sim_path = in.sim_path;
     if (!report.sim->interrupted.empty())
       return finish(report.sim->interrupted,
@@ -262,7 +279,7 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
                         std::to_string(n) + " grasps");
   }
   if (opt.render) {
-    const int pictured = render_stage(opt, in, progress, frames, &report);
+    const int pictured = render_stage(opt, in, progress, samples, &report);
     if (pictured < n)
       return finish(opt.cancel.reason(), "rendering, after " + std::to_string(pictured) +
                                              " of " + std::to_string(n) + " grasps");

@@ -6,6 +6,7 @@
 
 #include "cordgrasp/core/cancel_token.h"
 #include "cordgrasp/core/hand_description.h"
+#include "cordgrasp/jobs/physics_animation.h"
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/render_options.h"
 #include "cordgrasp/jobs/run_report.h"
@@ -31,7 +32,10 @@ struct RunParams {
   /// density, squeeze weight) applies to the physics of the unvalidated plan too.
   ValidationParams validation;
   PictureOptions picture;      ///< size of the pictures (view: iso)
-  bool render = true;          ///< write PNGs (planned grasps, physics frames, contact sheet)
+  /// Write PNGs (planned grasps, physics frames, contact sheet) and each grasp's physics
+  /// animation (grasp_K.webp).
+  bool render = true;
+  VideoParams video;           ///< size and rate of the animations
   std::string out_dir;         ///< output folder, created if missing
   /// Stop request, checked in the planner, before each grasp's physics and before each
   /// grasp's pictures; what finished is written, marked incomplete (RunReport::interrupted).

@@ -9,6 +9,7 @@
 #include "cordgrasp/core/cancel_token.h"
 #include "cordgrasp/core/grasp_perturbation.h"
 #include "cordgrasp/core/hand_description.h"
+#include "cordgrasp/jobs/physics_animation.h"
 #include "cordgrasp/jobs/validate_plan.h"
 #include "cordgrasp/sim/sim_params.h"
 
@@ -39,6 +40,9 @@ struct ValidateJobParams {
   PerturbationParams perturbation;
   std::uint64_t seed = 1;
   std::string snapshots_dir;
+  /// Existing folder: one animated WebP per grasp, grasp_K.webp, of its phases (first trial).
+  std::string video_dir;
+  VideoParams video;  ///< size and rate of the animations
   std::string trace_path;  ///< every SimParams::trace_interval_s (0: kDefaultTraceInterval_s)
   std::string out;
   /// Stop request: no new grasp or trial starts once it is set (those in flight finish); the
