@@ -788,6 +788,22 @@ PhaseResult GraspSimulation::lift() {
   return r;
 }
 
+void GraspSimulation::coast(double duration_s, const std::string& label) {
+  Impl& s = *impl_;
+  PhaseResult tail;  // only counts the steps for the trace samples
+  tail.name = label;
+  PhaseResult* const was = s.current;
+  s.current = &tail;
+  const Eigen::Isometry3d X_WB_hold = s.X_WB_cmd;
+  const int steps = static_cast<int>(std::lround(duration_s / s.dt));
+  for (int k = 0; k < steps && !s.blew_up; ++k) {
+    s.step(X_WB_hold);
+    if (s.closed && s.pose_change(s.X_BO_ref, nullptr) > s.params.drop_distance_m) break;
+  }
+  if (s.segment_hook && steps > 0) s.segment_hook(s.snapshot(label));
+  s.current = was;
+}
+
 PhaseResult GraspSimulation::shake() {
   Impl& s = *impl_;
   PhaseResult r;

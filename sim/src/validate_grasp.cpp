@@ -84,6 +84,12 @@ SimResult validate_grasp(const Mesh& mesh, const HandModel& hand, const Grasp& g
   auto fail = [&result](const PhaseResult& p) {
     if (p.outcome != Outcome::kHeld && result.outcome == Outcome::kHeld) result.outcome = p.outcome;
   };
+  // After a failed test, for the hook's pictures: where the object goes (no result).
+  auto show_failure = [&](GraspSimulation& sim, const PhaseResult& p) {
+    if (hook && p.outcome != Outcome::kHeld && p.outcome != Outcome::kUnstable &&
+        params.failure_tail_s > 0.0)
+      sim.coast(params.failure_tail_s, "after " + p.name);
+  };
   {
     GraspSimulation sim(mesh, hand, grasp, params);
     result.object = sim.object_info();
@@ -98,11 +104,13 @@ SimResult validate_grasp(const Mesh& mesh, const HandModel& hand, const Grasp& g
         result.phases.push_back(sim.lift());
         if (hook) hook(sim.snapshot("lift"));
         fail(result.phases.back());
+        show_failure(sim, result.phases.back());
       }
       if (tests.shake && result.outcome == Outcome::kHeld) {
         result.phases.push_back(sim.shake());
         if (hook) hook(sim.snapshot("shake"));
         fail(result.phases.back());
+        show_failure(sim, result.phases.back());
       } else if (tests.shake) {
         PhaseResult skipped;
         skipped.name = "shake";
@@ -130,6 +138,7 @@ SimResult validate_grasp(const Mesh& mesh, const HandModel& hand, const Grasp& g
       result.phases.push_back(sim.gravity6());
       if (hook) hook(sim.snapshot("gravity6"));
       fail(result.phases.back());
+      show_failure(sim, result.phases.back());
       result.wall_time_s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       return result;
@@ -144,6 +153,7 @@ SimResult validate_grasp(const Mesh& mesh, const HandModel& hand, const Grasp& g
   if (closed_again) {
     result.phases.push_back(sim.gravity6());
     if (hook) hook(sim.snapshot("gravity6"));
+    show_failure(sim, result.phases.back());
   } else {
     PhaseResult failed;
     failed.name = "gravity6";

@@ -17,6 +17,7 @@
 #include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/sim_json.h"
 #include "cordgrasp/jobs/validate_job.h"
+#include "cordgrasp/render/animation.h"
 #include "test_files.h"
 #include "test_paths.h"
 
@@ -442,6 +443,79 @@ TEST_F(ValidateCli, SnapshotsWriteOnePngPerGraspAndPhase) {
                 std::make_pair(800u, 600u))
           << k << " " << phase;
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(shots), {}), 6);
+}
+
+/// Where the object is in an animation frame: the centroid [px] and count of its neutral grey
+/// pixels (the object is drawn grey, the gripper's links in colours or slate), inside the
+/// picture's middle rows (the top rows and the caption band hold text).
+struct ObjectInImage {
+  Eigen::Vector2d centroid_px = Eigen::Vector2d::Zero();
+  int pixels = 0;
+};
+
+ObjectInImage object_in_image(const Image& image) {
+  constexpr int kGreyTolerance = 10;          ///< max channel spread of the shaded grey object
+  constexpr int kDarkest = 70, kLightest = 235;  ///< shaded object, not the white background
+  ObjectInImage o;
+  for (int y = image.height / 8; y < image.height * 7 / 8; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      const int lo = std::min({p[0], p[1], p[2]}), hi = std::max({p[0], p[1], p[2]});
+      if (hi - lo > kGreyTolerance || lo < kDarkest || hi > kLightest) continue;
+      o.centroid_px += Eigen::Vector2d(x, y);
+      ++o.pixels;
+    }
+  if (o.pixels > 0) o.centroid_px /= o.pixels;
+  return o;
+}
+
+TEST_F(ValidateCli, VideoShowsAHeldObjectStayingInTheHandAndADroppedOneLeavingIt) {
+  constexpr int kWidth = 320, kHeight = 240;
+  constexpr double kFps = 20.0;
+  constexpr double kStillPx = 0.03 * kHeight;  ///< a held object's image moves less than this
+  constexpr double kGonePx = 0.10 * kHeight;   ///< a dropped one's moves more (or it leaves)
+  write_plan(plan_path(), 1);
+  const auto animation = [&](const std::string& name, const std::string& args) {
+    const std::filesystem::path dir = dir_ / name;
+    std::filesystem::create_directories(dir);
+    const auto r = run_cordgrasp("validate --plan " + plan_path() + " --tests lift -q " + args +
+                                 " --video " + dir.string() + " --video-size " +
+                                 std::to_string(kWidth) + "x" + std::to_string(kHeight) +
+                                 " --video-fps 20 --out " + out_path());
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1);
+    return read_animation((dir / "grasp_0.webp").string());
+  };
+  const std::vector<AnimationFrame> held = animation("held", "");
+  EXPECT_EQ(read_out()["grasps"][0]["outcome"], "held");
+  const double lift_s = read_out()["grasps"][0]["phases"].back()["sim_time_s"].get<double>();
+  const std::vector<AnimationFrame> dropped = animation("dropped", "--mu 0");
+  EXPECT_NE(read_out()["grasps"][0]["outcome"], "held");  // slips out: no friction
+
+  ASSERT_GT(held.size(), 10u);
+  EXPECT_EQ(held.front().image.width, kWidth);
+  EXPECT_EQ(held.front().image.height, kHeight);
+  // Played in simulated time, at about the frame rate, plus the verdict held at the end.
+  EXPECT_GT(static_cast<double>(held.size()), 0.8 * kFps * lift_s);
+  EXPECT_GT(held.back().timestamp_s, lift_s);
+  const ObjectInImage held_first = object_in_image(held.front().image);
+  const ObjectInImage held_last = object_in_image(held.back().image);
+  ASSERT_GT(held_first.pixels, 200);
+  EXPECT_GT(held_last.pixels, held_first.pixels / 2);
+  EXPECT_LT((held_last.centroid_px - held_first.centroid_px).norm(), kStillPx);
+
+  ASSERT_GT(dropped.size(), 2u);
+  const ObjectInImage dropped_first = object_in_image(dropped.front().image);
+  const ObjectInImage dropped_last = object_in_image(dropped.back().image);
+  ASSERT_GT(dropped_first.pixels, 200);
+  EXPECT_TRUE(dropped_last.pixels < dropped_first.pixels / 2 ||
+              (dropped_last.centroid_px - dropped_first.centroid_px).norm() > kGonePx)
+      << dropped_first.pixels << " px at " << dropped_first.centroid_px.transpose() << " → "
+      << dropped_last.pixels << " px at " << dropped_last.centroid_px.transpose();
+}
+
+TEST_F(ValidateCli, VideoIntoAMissingFolderIsAnErrorBeforeSimulating) {
+  expect_error("--video " + (dir_ / "nowhere").string(), "--video");
 }
 
 TEST_F(ValidateCli, SnapshotsIntoAMissingFolderIsAnErrorBeforeSimulating) {

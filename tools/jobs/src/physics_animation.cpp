@@ -141,8 +141,8 @@ std::string physics_animation(Renderer& renderer, const HandModel& hand,
     draw_text_centered(image, status, 0, band_y, video.width_px, video.height_px - band_y,
                        text_px, 8, state);
     draw_text(image, title, border_px + 6, border_px + text_px + 4, text_px);
-    if (failed) {
-      draw_border(image, border_px, kFailRed);
+    if (failed) draw_border(image, border_px, kFailRed);
+    if (failed && !last) {
       draw_text(image,
                 std::string(to_string(result.outcome)) + " in " + failure->phase + " at t = " +
                     fixed(failure->sim_time_s, 2) + " s",
@@ -151,8 +151,8 @@ std::string physics_animation(Renderer& renderer, const HandModel& hand,
     if (last) {
       encoder.add_frame(image, duration);
       // The verdict, held on screen.
-      draw_text_centered(image, verdict(result), 0, border_px + 3 * text_px, video.width_px,
-                         2 * text_px, static_cast<int>(1.5 * text_px), 8,
+      draw_text_centered(image, verdict(result), 0, border_px + 3 * text_px / 2,
+                         video.width_px, 2 * text_px, static_cast<int>(1.5 * text_px), 8,
                          result.held() ? kHeldGreen : kFailRed);
       encoder.add_frame(image, video.final_hold_s);
     } else {

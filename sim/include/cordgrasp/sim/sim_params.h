@@ -231,6 +231,9 @@ struct SimParams {
   // --- Tracing -----------------------------------------------------------------------------
   /// > 0: the phase hook also gets a snapshot this often inside the phases [s]; 0: off.
   double trace_interval_s = 0.0;
+  /// With a phase hook (pictures, trace): after a test fails, the world runs on this long
+  /// with the hand held still, so pictures show where the object goes [s]. Results unchanged.
+  double failure_tail_s = 0.5;
 
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
@@ -276,7 +279,7 @@ struct SimParams {
                  CORDGRASP_NVP(held_rotation_rad), CORDGRASP_NVP(contact_distance_m),
                  CORDGRASP_NVP(unstable_speed_mps), CORDGRASP_NVP(drop_distance_m),
                  CORDGRASP_NVP(settle_shift_tolerance_m), CORDGRASP_NVP(squeeze_shift_limit_m),
-                 CORDGRASP_NVP(trace_interval_s));
+                 CORDGRASP_NVP(trace_interval_s), CORDGRASP_NVP(failure_tail_s));
   }
 };
 

@@ -119,6 +119,12 @@ class GraspSimulation {
   /// (less with SimParams::rest_exit_time_s).
   PhaseResult gravity6();
 
+  /// The world runs on `duration_s` with the hand held where it is (gravity as in the last
+  /// phase), for the pictures of a failure: the segment hook gets samples labelled `label`
+  /// (SimParams::trace_interval_s) and a last one; stops once the object is drop_distance_m
+  /// off. No result: the outcome was decided before.
+  void coast(double duration_s, const std::string& label);
+
   /// Current world state labelled `phase`.
   PhaseSnapshot snapshot(const std::string& phase) const;
   /// For each planned contact of the grasp: the distance in the object frame from its point to
