@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "cordgrasp/render/animation.h"
 #include "test_files.h"
 #include "test_paths.h"
 
@@ -47,6 +48,8 @@ TEST(CliRun, DefaultsWritePlanSimReportAndPictures) {
     const std::string physics = "grasp_" + std::to_string(k) + "_physics.png";
     EXPECT_EQ(png_size(dir.file(planned)), std::make_pair(kWidth_px, kHeight_px)) << planned;
     EXPECT_GT(png_size(dir.file(physics)).first, 0u) << physics;
+    const std::string animation = "grasp_" + std::to_string(k) + ".webp";
+    EXPECT_GT(read_animation(dir.file(animation)).size(), 10u) << animation;
     EXPECT_NE(report.find("(" + planned + ")"), std::string::npos) << report;
     EXPECT_NE(report.find(sim.at("grasps").at(k).at("outcome").get<std::string>()),
               std::string::npos);
@@ -55,7 +58,7 @@ TEST(CliRun, DefaultsWritePlanSimReportAndPictures) {
   // Nothing half-written is left behind: no temporary files.
   for (const auto& e : fs::directory_iterator(dir.path))
     EXPECT_TRUE(e.path().extension() == ".json" || e.path().extension() == ".png" ||
-                e.path().extension() == ".md")
+                e.path().extension() == ".md" || e.path().extension() == ".webp")
         << e.path();
   EXPECT_TRUE(r.output.empty() || r.output.find("run [") == std::string::npos) << r.output;
 

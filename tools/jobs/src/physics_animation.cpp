@@ -1,9 +1,11 @@
 #include "cordgrasp/jobs/physics_animation.h"
 
 #include <cmath>
+#include <map>
 #include <cstdio>
 #include <stdexcept>
 
+#include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/jobs/hand_scene.h"
 #include "cordgrasp/render/animation.h"
 #include "cordgrasp/render/text.h"
@@ -46,6 +48,28 @@ void draw_border(Image& image, int width, const Rgba& rgba) {
   fill_rect(image, 0, image.height - width, image.width, width, rgba);
   fill_rect(image, 0, 0, width, image.height, rgba);
   fill_rect(image, image.width - width, 0, width, image.height, rgba);
+}
+
+/// A frame is drawn again only when some mesh's bounding box corner would move this far on
+/// screen; otherwise the last picture is reused (a held grasp barely moves in the hand's view).
+constexpr double kRedrawPx = 0.5;
+
+/// Bounding box corners of every mesh of `scene`, in world, less `shift_W`.
+std::vector<Eigen::Vector3d> box_corners(const Scene& scene, const Eigen::Vector3d& shift_W,
+                                         std::map<const Mesh*, Eigen::AlignedBox3d>& boxes) {
+  std::vector<Eigen::Vector3d> p;
+  for (const SceneMesh& m : scene.meshes) {
+    if (!m.mesh) continue;
+    auto it = boxes.find(m.mesh.get());
+    if (it == boxes.end()) {
+      const Aabb b = mesh_bounds(*m.mesh);
+      it = boxes.emplace(m.mesh.get(), Eigen::AlignedBox3d(b.min, b.max)).first;
+    }
+    for (int c = 0; c < 8; ++c)
+      p.push_back(m.X_WM * it->second.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)) -
+                  shift_W);
+  }
+  return p;
 }
 
 }  // namespace
@@ -108,6 +132,10 @@ std::string physics_animation(Renderer& renderer, const HandModel& hand,
   AnimationEncoder encoder(video.width_px, video.height_px, anim);
   const double frame_s = 1.0 / video.frame_rate_hz;
   double shown_until = -1.0;  // simulated time of the last frame drawn (per world)
+  std::map<const Mesh*, Eigen::AlignedBox3d> boxes;
+  Image drawn;  // the last picture rendered, without text
+  std::vector<Eigen::Vector3d> drawn_corners;  // its meshes' box corners (hand-following)
+  RenderInfo info;
   for (size_t i = 0; i < samples.size(); ++i) {
     const PhaseSnapshot& s = samples[i];
     const bool last = i + 1 == samples.size();
@@ -124,13 +152,23 @@ std::string physics_animation(Renderer& renderer, const HandModel& hand,
 
     RenderParams p = params;
     p.camera = base;
-    if (!s.X_WL.empty()) {
-      const Eigen::Vector3d move = s.X_WL.front().translation() - anchor_p;
-      p.camera->eye_W += move;
-      p.camera->target_W += move;
+    const Eigen::Vector3d move =
+        s.X_WL.empty() ? Eigen::Vector3d(Eigen::Vector3d::Zero())
+                       : Eigen::Vector3d(s.X_WL.front().translation() - anchor_p);
+    p.camera->eye_W += move;
+    p.camera->target_W += move;
+    const Scene scene = scene_of(s);
+    std::vector<Eigen::Vector3d> corners = box_corners(scene, move, boxes);
+    bool redraw = drawn.rgba.empty() || corners.size() != drawn_corners.size();
+    for (size_t c = 0; c < corners.size() && !redraw; ++c)
+      redraw = (project_to_pixel(base, video.width_px, info.view_height_px, corners[c]) -
+                project_to_pixel(base, video.width_px, info.view_height_px, drawn_corners[c]))
+                   .norm() > kRedrawPx;
+    if (redraw) {
+      drawn = renderer.render(scene, p, &info);
+      drawn_corners = std::move(corners);
     }
-    RenderInfo info;
-    Image image = renderer.render(scene_of(s), p, &info);
+    Image image = drawn;
     const bool failed = failure && i >= failure->sample;
     const Rgba& state = failed ? kFailRed : Rgba(0.15, 0.15, 0.15, 1.0);
     std::string status = s.phase + " · t = " + fixed(s.sim_time_s, 2) + " s · shift " +

@@ -19,7 +19,7 @@ struct VideoParams {
   int width_px = 640;            ///< frame width [px]
   int height_px = 480;           ///< frame height [px], caption band included
   double frame_rate_hz = 25.0;   ///< frames per simulated second (played in real time)
-  int quality = 70;              ///< lossy WebP quality, 0 … 100
+  int quality = 90;              ///< lossy WebP quality, 0 … 100
   double final_hold_s = 1.0;     ///< the last frame, with the verdict, stays this long [s]
 };
 
