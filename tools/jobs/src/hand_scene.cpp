@@ -195,6 +195,27 @@ Scene grasp_scene(const HandModel& hand, const HandMeshes& meshes,
   return scene;
 }
 
+Camera frame_on_grasp(const HandModel& hand, const HandMeshes& meshes,
+                      std::shared_ptr<const Mesh> object, const Eigen::Isometry3d& X_WO,
+                      const std::vector<Eigen::Isometry3d>& X_WL, const RenderParams& params,
+                      bool captioned) {
+  std::vector<bool> finger_link(hand.links.size(), false);
+  for (const Finger& f : hand_fingers(hand))
+    for (const int l : f.links) finger_link[static_cast<size_t>(l)] = true;
+  HandMeshes fingers;
+  for (const HandMeshes::Part& part : meshes.parts)
+    if (part.link >= 0 && part.link < static_cast<int>(finger_link.size()) &&
+        finger_link[static_cast<size_t>(part.link)])
+      fingers.parts.push_back(part);
+  Scene focus;
+  if (object) add_object(focus, std::move(object), X_WO);
+  add_hand(focus, fingers.parts.empty() ? meshes : fingers, X_WL);  // no fingers: whole hand
+  if (focus.meshes.empty()) add_hand(focus, meshes, X_WL);
+  if (focus.meshes.empty()) throw std::invalid_argument("frame_on_grasp: nothing to frame");
+  if (captioned) focus.caption = " ";  // the same caption band as the picture's
+  return frame_scenes({focus}, params);
+}
+
 std::vector<Image> render_snapshots(Renderer& renderer, const HandModel& hand,
                                     std::shared_ptr<const Mesh> object,
                                     const std::vector<SnapshotFrame>& frames,

@@ -50,6 +50,15 @@ void draw_border(Image& image, int width, const Rgba& rgba) {
   fill_rect(image, image.width - width, 0, width, image.height, rgba);
 }
 
+// Lightens rows [y, y + h) toward white by `amount` in [0, 1], so text over the hand reads.
+void lighten_rows(Image& image, int y, int h, double amount) {
+  for (int row = std::max(0, y); row < std::min(image.height, y + h); ++row)
+    for (int x = 0; x < image.width; ++x) {
+      std::uint8_t* p = image.pixel(x, row);
+      for (int c = 0; c < 3; ++c) p[c] = static_cast<std::uint8_t>(p[c] + amount * (255 - p[c]));
+    }
+}
+
 /// A frame is drawn again only when some mesh's bounding box corner would move this far on
 /// screen; otherwise the last picture is reused (a held grasp barely moves in the hand's view).
 constexpr double kRedrawPx = 0.5;
@@ -116,9 +125,10 @@ std::string physics_animation(Renderer& renderer, const HandModel& hand,
   params.width_px = video.width_px;
   params.height_px = video.height_px;
   params.supersample = 1;
-  params.view.margin = 0.12;
+  params.view.margin = 0.10;
   params.caption_size_px = std::max(11.0, video.height_px / 30.0);
-  const Camera base = frame_scenes({scene_of(samples[anchor])}, params);
+  const Camera base = frame_on_grasp(hand, meshes, object, samples[anchor].X_WO,
+                                     samples[anchor].X_WL, params, true);
   const Eigen::Vector3d anchor_p = samples[anchor].X_WL.empty()
                                        ? Eigen::Vector3d(Eigen::Vector3d::Zero())
                                        : Eigen::Vector3d(samples[anchor].X_WL.front().translation());
@@ -178,6 +188,7 @@ std::string physics_animation(Renderer& renderer, const HandModel& hand,
     const int band_y = info.view_height_px;
     draw_text_centered(image, status, 0, band_y, video.width_px, video.height_px - band_y,
                        text_px, 8, state);
+    lighten_rows(image, 0, border_px + 3 * text_px + 12, 0.7);  // title, failure, verdict
     draw_text(image, title, border_px + 6, border_px + text_px + 4, text_px);
     if (failed) draw_border(image, border_px, kFailRed);
     if (failed && !last) {

@@ -148,26 +148,33 @@ SimDocument physics_stage(const RunParams& opt, const RunInputs& in, const RunPr
 }
 
 /// Pictures of grasp k's physics frames as one strip.
-Image physics_strip(Renderer& renderer, const RunInputs& in, const RenderParams& params, int k,
-                    const SimResult& r, const std::vector<SnapshotFrame>& frames) {
+Image physics_strip(Renderer& renderer, const RunInputs& in, const HandMeshes& meshes,
+                    const RenderParams& params, int k, const SimResult& r,
+                    const std::vector<SnapshotFrame>& frames) {
   Scene empty;
   RenderParams snap = render_params(in.picture, empty);
   snap.width_px = params.width_px / 2;
   snap.height_px = params.height_px / 2;
+  // Each panel framed on the object and the fingers at that moment.
   std::vector<std::string> captions;
-  std::vector<SnapshotFrame> plain = frames;
-  for (SnapshotFrame& frame : plain) {
+  std::vector<Image> panels;
+  for (const SnapshotFrame& frame : frames) {
     const PhaseResult* p = r.phase(frame.name);
     captions.push_back("after " + frame.name +
                        (p ? std::string(" · ") + to_string(p->outcome) : std::string()));
-    frame.caption.clear();
+    Scene scene;
+    add_object(scene, in.mesh, frame.X_WO);
+    add_hand(scene, meshes, frame.X_WL);
+    scene.ground = Ground::kShadow;
+    RenderParams panel = snap;
+    panel.camera = frame_on_grasp(in.hand, meshes, in.mesh, frame.X_WO, frame.X_WL, snap, false);
+    panels.push_back(renderer.render(scene, panel));
   }
   ContactSheetParams strip;
-  strip.columns = static_cast<int>(plain.size());
+  strip.columns = static_cast<int>(frames.size());
   strip.title = in.mesh->name + " · " + in.hand.name + " · grasp " + std::to_string(k) +
                 " in Bullet: " + to_string(r.outcome);
-  return compose_contact_sheet(render_snapshots(renderer, in.hand, in.mesh, plain, snap),
-                               captions, strip);
+  return compose_contact_sheet(panels, captions, strip);
 }
 
 /// 3. Pictures: each planned grasp (cords, contacts), its physics frames, a contact sheet.
@@ -213,7 +220,7 @@ int render_stage(const RunParams& opt, const RunInputs& in, const RunProgress& p
       const SimResult& result = report->sim->results[static_cast<size_t>(k)];
       pics.snapshots.push_back("grasp_" + std::to_string(k) + "_physics.png");
       write_png((fs::path(opt.out_dir) / pics.snapshots.back()).string(),
-                physics_strip(renderer, in, params, k, result, f));
+                physics_strip(renderer, in, meshes, params, k, result, f));
       pics.animation = "grasp_" + std::to_string(k) + ".webp";
       write_file_atomically((fs::path(opt.out_dir) / pics.animation).string(),
                             physics_animation(renderer, in.hand, in.mesh, s, result,

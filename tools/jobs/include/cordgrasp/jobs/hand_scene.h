@@ -92,6 +92,16 @@ Scene grasp_scene(const HandModel& hand, const HandMeshes& meshes,
                   std::shared_ptr<const Mesh> object, const Grasp& grasp,
                   const GraspRegion* region = nullptr, const OverlayStyle& style = {});
 
+/// The camera that frames what matters in a grasp picture: the object at X_WO and the hand's
+/// fingers (hand_fingers: the links actors move) at link poses X_WL fill the view of
+/// `params` (its view direction, size, margin) in a picture with a caption band when
+/// `captioned`; the palm and the arm may be cut.
+/// @throws std::invalid_argument when X_WL does not fit the hand.
+Camera frame_on_grasp(const HandModel& hand, const HandMeshes& meshes,
+                      std::shared_ptr<const Mesh> object, const Eigen::Isometry3d& X_WO,
+                      const std::vector<Eigen::Isometry3d>& X_WL, const RenderParams& params,
+                      bool captioned);
+
 /// One picture of a simulation or plan: the hand's world link poses and the object's pose.
 struct SnapshotFrame {
   std::vector<Eigen::Isometry3d> X_WL;  ///< one pose per HandModel link (from link_poses)
