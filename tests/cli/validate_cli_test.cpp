@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -512,6 +513,26 @@ TEST_F(ValidateCli, VideoShowsAHeldObjectStayingInTheHandAndADroppedOneLeavingIt
               (dropped_last.centroid_px - dropped_first.centroid_px).norm() > kGonePx)
       << dropped_first.pixels << " px at " << dropped_first.centroid_px.transpose() << " → "
       << dropped_last.pixels << " px at " << dropped_last.centroid_px.transpose();
+}
+
+TEST_F(ValidateCli, VideoAnimatesEveryTrialTheSameForAnyNumberOfThreads) {
+  const auto files = [&](int jobs) {
+    const std::filesystem::path dir = dir_ / ("jobs" + std::to_string(jobs));
+    std::filesystem::create_directories(dir);
+    const auto r = run_cordgrasp("validate --plan " + plan_path() + " --tests lift -q --trials 2 " +
+                                 "--video-size 160x120 --video " + dir.string() + " -j " +
+                                 std::to_string(jobs) + " --out " + out_path());
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    std::map<std::string, std::string> bytes;
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+      bytes[e.path().filename().string()] = test::read_text(e.path().string());
+    return bytes;
+  };
+  const auto one = files(1);
+  EXPECT_EQ(one.size(), 4u);  // two grasps, two trials each
+  for (const std::string name : {"grasp_0.webp", "grasp_0_trial_1.webp", "grasp_1_trial_1.webp"})
+    EXPECT_EQ(one.count(name), 1u) << name;
+  EXPECT_EQ(files(2), one);  // byte for byte
 }
 
 TEST_F(ValidateCli, VideoIntoAMissingFolderIsAnErrorBeforeSimulating) {

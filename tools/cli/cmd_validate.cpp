@@ -67,8 +67,8 @@ void add_validate_command(CLI::App& app) {
   cmd->add_option("--snapshots", opt->job.snapshots_dir,
                   "Existing folder: one PNG per grasp and phase end, grasp_K_<phase>.png");
   cmd->add_option("--video", opt->job.video_dir,
-                  "Existing folder: one animated WebP per grasp, grasp_K.webp, of its physics "
-                  "played in simulated time (first trial)");
+                  "Existing folder: one animated WebP of the physics per grasp, grasp_K.webp, "
+                  "and per nudged trial, grasp_K_trial_T.webp, played in simulated time");
   cmd->add_option("--video-size", *video_size, "Animation frame size WxH [px]")
       ->capture_default_str();
   cmd->add_option("--video-fps", opt->job.video.frame_rate_hz, "Animation frames per second")

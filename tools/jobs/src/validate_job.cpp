@@ -1,5 +1,6 @@
 #include "cordgrasp/jobs/validate_job.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <sstream>
@@ -147,6 +148,22 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
       hooks, renderer ? 1 : opt.jobs,  // pictures are drawn on this thread, one grasp at a time
       opt.cancel);
   const int asked = doc.grasps_asked;
+  // --video: each trial's samples and result too, by [result index][trial].
+  std::vector<std::vector<std::vector<PhaseSnapshot>>> trial_samples;
+  const std::vector<int> trial_index = doc.grasp_indices;  // results' grasps before the trials
+  std::vector<std::vector<SimResult>> trial_results;
+  TrialWatch watch;
+  if (video && opt.trials > 1) {
+    trial_samples.assign(doc.results.size(), std::vector<std::vector<PhaseSnapshot>>(
+                                                 static_cast<size_t>(opt.trials)));
+    trial_results.assign(doc.results.size(), std::vector<SimResult>(size_t(opt.trials)));
+    watch.hook = [&](int k, int t) -> PhaseHook {
+      return [&, k, t](const PhaseSnapshot& s) {
+        trial_samples[size_t(k)][size_t(t)].push_back(s);
+      };
+    };
+    watch.done = [&](int k, int t, const SimResult& r) { trial_results[size_t(k)][size_t(t)] = r; };
+  }
   if (opt.trials > 1)  // interrupted above: no trial runs, and no grasp has all its trials
     add_perturbed_trials(doc, plan, hand, mesh, opt.trials, opt.perturbation, opt.seed,
                          [&](int done, int total, const SimResult&) {
@@ -156,7 +173,7 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
                                                done - 1)]));
                            if (cb.progress) cb.progress("trials of grasps", done, total);
                          },
-                         opt.jobs, opt.cancel);
+                         opt.jobs, opt.cancel, watch);
   doc.grasps_asked = asked;
   doc.plan_path = canonical(opt.plan);
   doc.object_path = opt.object.empty() ? plan.object_path : canonical(opt.object);
@@ -165,17 +182,29 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
     write_file_atomically(opt.trace_path, trace.str());
   }
   if (video) {
+    // grasp_K.webp (as planned), grasp_K_trial_T.webp (nudged trials); trial samples are kept
+    // by the grasp's index among the results before trials (a cancelled run drops some).
     Renderer animator;
+    const auto write = [&](const std::string& name, const std::vector<PhaseSnapshot>& s,
+                           const SimResult& r, const std::string& title) {
+      if (s.empty()) return;
+      write_file_atomically((std::filesystem::path(opt.video_dir) / (name + ".webp")).string(),
+                            physics_animation(animator, hand, object, s, r, params, title,
+                                              opt.video));
+    };
     for (size_t i = 0; i < doc.results.size() && !opt.cancel.cancelled(); ++i) {
       const int k = doc.grasp_indices[i];
       const std::string name = "grasp_" + std::to_string(k);
-      write_file_atomically(
-          (std::filesystem::path(opt.video_dir) / (name + ".webp")).string(),
-          physics_animation(animator, hand, object, samples[static_cast<size_t>(k)],
-                            doc.results[i], params,
-                            plan.object_name + " · " + hand.name + " · grasp " +
-                                std::to_string(k),
-                            opt.video));
+      const std::string title = plan.object_name + " · " + hand.name + " · grasp " +
+                                std::to_string(k);
+      write(name, samples[static_cast<size_t>(k)], doc.results[i], title);
+      for (int t = 1; t < static_cast<int>(opt.trials) && !trial_samples.empty(); ++t) {
+        const size_t before = static_cast<size_t>(
+            std::find(trial_index.begin(), trial_index.end(), k) - trial_index.begin());
+        if (before >= trial_samples.size()) continue;
+        write(name + "_trial_" + std::to_string(t), trial_samples[before][size_t(t)],
+              trial_results[before][size_t(t)], title + " · trial " + std::to_string(t));
+      }
       if (cb.progress) cb.progress("animations", static_cast<int>(i) + 1,
                                    static_cast<int>(doc.results.size()));
     }

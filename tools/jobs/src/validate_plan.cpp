@@ -96,7 +96,7 @@ SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const
 void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const HandModel& hand,
                           const Mesh& mesh, int trials, const PerturbationParams& perturbation,
                           std::uint64_t seed, const ValidateProgress& progress, int jobs,
-                          const CancelToken& cancel) {
+                          const CancelToken& cancel, const TrialWatch& watch) {
   if (trials < 1 || trials > 1000)
     throw std::invalid_argument("add_perturbed_trials: trials must be in [1, 1000], got " +
                                 std::to_string(trials));
@@ -127,7 +127,9 @@ void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const Hand
     const int k = task / per_grasp, t = 1 + task % per_grasp;
     const Grasp& planned = plan.grasps[static_cast<size_t>(doc.grasp_indices[static_cast<size_t>(k)])];
     const Grasp g = perturbed_grasp(planned, perturbation, seed + 1000 * k + t);
-    const SimResult r = validate_grasp(mesh, hand, g, doc.params, doc.tests);
+    const SimResult r = validate_grasp(mesh, hand, g, doc.params, doc.tests,
+                                       watch.hook ? watch.hook(k, t) : PhaseHook{});
+    if (watch.done) watch.done(k, t, r);
     doc.trial_outcomes[static_cast<size_t>(k)][static_cast<size_t>(t)] = r.outcome;
     doc.trial_close_motion[static_cast<size_t>(k)][static_cast<size_t>(t)] = close_motion(r);
     bool grasp_done = false;

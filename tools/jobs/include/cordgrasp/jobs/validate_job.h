@@ -40,7 +40,8 @@ struct ValidateJobParams {
   PerturbationParams perturbation;
   std::uint64_t seed = 1;
   std::string snapshots_dir;
-  /// Existing folder: one animated WebP per grasp, grasp_K.webp, of its phases (first trial).
+  /// Existing folder: one animated WebP per grasp, grasp_K.webp, and per nudged trial,
+  /// grasp_K_trial_T.webp, of its phases.
   std::string video_dir;
   VideoParams video;  ///< size and rate of the animations
   std::string trace_path;  ///< every SimParams::trace_interval_s (0: kDefaultTraceInterval_s)

@@ -68,17 +68,24 @@ SimDocument validate_plan(const PlanDocument& plan, const HandModel& hand, const
                           const GraspPhaseHooks& hooks = {}, int jobs = 1,
                           const CancelToken& cancel = {});
 
+/// What add_perturbed_trials' `watch`, if set, sees: each trial's physics (its hook, e.g. for an animation) and result.
+struct TrialWatch {
+  std::function<PhaseHook(int k, int trial)> hook;  ///< phase hook of trial `trial` of grasp k
+  std::function<void(int k, int trial, const SimResult&)> done;  ///< on the trial's thread
+};
+
 /// Held / not-held of a marginal grasp is chaotic (docs/physics.md): validates every grasp of
 /// `doc` `trials` − 1 more times with the hand moved and turned slightly (perturbed_grasp,
 /// seed trial_seed + 1000·k + t for trial t of grasp k) and records all outcomes in
 /// doc.trial_outcomes; `progress` is called after each grasp's trials, in grasp order. `jobs`
-/// threads run the trials (results independent of it). Once `cancel` is set no further trial
+/// threads run the trials (results independent of it); `watch` sees each trial. Once `cancel` is set no further trial
 /// starts; grasps whose trials did not all run are removed from `doc` and doc.interrupted set.
 /// @throws std::invalid_argument when trials is not in [1, 1000].
 void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const HandModel& hand,
                           const Mesh& mesh, int trials, const PerturbationParams& perturbation,
                           std::uint64_t seed, const ValidateProgress& progress = {},
-                          int jobs = 1, const CancelToken& cancel = {});
+                          int jobs = 1, const CancelToken& cancel = {},
+                          const TrialWatch& watch = {});
 
 /// The closing lines of a validation: "held 2 / 3 (tests lift,shake, mu 0.5) -> OUT", the
 /// failures_line and, with trials, "held in k / N trials of all grasps"; each ends in '\n'.
