@@ -11,7 +11,8 @@ namespace cordgrasp {
 /// Settings of an animation file.
 struct AnimationParams {
   double frame_rate_hz = 25.0;  ///< frames per second of add_frame() without a duration
-  int quality = 70;             ///< lossy quality, 0 (smallest) … 100 (best)
+  int quality = 90;             ///< lossy quality, 0 (smallest) … 100 (best); below ~85 the
+                                ///< sub-frame blending leaves ghosts of moved parts
   int effort = 2;               ///< encoder effort (libwebp "method"), 0 (fast) … 6 (small)
   int loop_count = 0;           ///< times the animation plays; 0: forever
 };
