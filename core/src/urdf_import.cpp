@@ -104,9 +104,8 @@ std::string resolve_mesh_path(const std::string& urdf_path, const std::string& l
     const std::string dir = find_ros_package(package, options.package_paths);
     if (dir.empty())
       fail(urdf_path, "link " + in_quotes(link) + " mesh " + in_quotes(filename) +
-                          ": ROS package " + in_quotes(package) +
-                          " not found (searched HandLoadOptions::package_paths, "
-                          "ROS_PACKAGE_PATH, AMENT_PREFIX_PATH)");
+                          ": ROS package " + in_quotes(package) + " not found (searched " +
+                          ros_package_search_summary(options.package_paths) + ")");
     p = fs::path(dir) / rest.substr(slash + 1);
   }
   if (p.is_relative()) p = fs::path(urdf_path).parent_path() / p;

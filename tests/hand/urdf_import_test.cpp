@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <string>
 
@@ -163,6 +164,9 @@ TEST(UrdfImportPackageUri, ResolvedThroughAmentPrefixPathShare) {
   const fs::path share = prefix.path() / "share" / kPackage;
   fs::create_directories(share / "meshes");
   fs::copy_file(package_dir() / "meshes" / "tetra.obj", share / "meshes" / "tetra.obj");
+  const fs::path index = prefix.path() / "share" / "ament_index" / "resource_index" / "packages";
+  fs::create_directories(index);
+  std::ofstream(index / kPackage).flush();  // ament's marker of an installed package: empty
   ScopedEnv ros("ROS_PACKAGE_PATH", std::nullopt);
   ScopedEnv ament("AMENT_PREFIX_PATH", "/nonexistent/prefix:" + prefix.path().string());
   expect_meshes_from(load_hand(package_hand()), share);
@@ -200,6 +204,170 @@ TEST(UrdfImportPackageUri, RosPackagePathDirectoryWithoutPackageXmlIsNotAPackage
   ScopedEnv ament("AMENT_PREFIX_PATH", std::nullopt);
   EXPECT_NE(load_error(package_hand()).find("ROS package 'cordgrasp_test_meshes' not found"),
             std::string::npos);
+}
+
+// --- package:// through a crawl of ROS_PACKAGE_PATH (rospack, catkin) ---------------------------
+
+/// A package folder as catkin has it: `dir`/package.xml naming `name` (with comments, one of
+/// them holding a <name> element, as generated package.xml files have) and meshes/tetra.obj.
+void write_package(const fs::path& dir, const std::string& name) {
+  fs::create_directories(dir / "meshes");
+  fs::copy_file(package_dir() / "meshes" / "tetra.obj", dir / "meshes" / "tetra.obj");
+  std::ofstream(dir / "package.xml")
+      << "<?xml version=\"1.0\"?>\n<package format=\"3\">\n"
+      << "  <!-- <name>not_this_name</name> -->\n  <name>\n    " << name << "\n  </name>\n"
+      << "  <version>0.1.0</version>\n  <!-- one line description -->\n"
+      << "  <description>meshes</description>\n"
+      << "  <maintainer email=\"a@example.com\">a</maintainer>\n  <license>MIT</license>\n"
+      << "  <buildtool_depend>catkin</buildtool_depend>\n</package>\n";
+}
+
+/// The package_uri hand with its URDF's package://cordgrasp_test_meshes/... renamed to
+/// package://`package`/..., written to `dir`; returns the description's path.
+std::string write_hand_naming(const fs::path& dir, const std::string& package) {
+  fs::create_directories(dir);
+  std::ifstream in(test_data("hands/package_uri/package_uri.urdf"));
+  std::string urdf((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string from = std::string("package://") + kPackage + "/";
+  for (size_t at = urdf.find(from); at != std::string::npos; at = urdf.find(from, at))
+    urdf.replace(at, from.size(), "package://" + package + "/");
+  std::ofstream(dir / "package_uri.urdf") << urdf;
+  fs::copy_file(package_hand(), dir / "package_uri.yaml");
+  return (dir / "package_uri.yaml").string();
+}
+
+// Each test crawls its own temp dir: the crawl is cached per ROS_PACKAGE_PATH value.
+
+TEST(UrdfImportRosPackageCrawl, FindsAPackageInARepositoryFolderOfACatkinWorkspaceByItsName) {
+  TempDir ws("crawl_nested");
+  // The folder is not named for the package: the crawl matches package.xml's <name>.
+  const fs::path package = ws.path() / "src" / "some_repo" / "my_description";
+  write_package(package, "my_hand_description");
+  // Hidden folders are not walked (".hidden" would come first in name order).
+  write_package(ws.path() / "src" / ".hidden" / "copy", "my_hand_description");
+  const std::string hand = write_hand_naming(ws.path() / "hand", "my_hand_description");
+  ScopedEnv ros("ROS_PACKAGE_PATH", "/nonexistent/ros:" + (ws.path() / "src").string());
+  ScopedEnv ament("AMENT_PREFIX_PATH", std::nullopt);
+  expect_meshes_from(load_hand(hand), package);
+}
+
+TEST(UrdfImportRosPackageCrawl, CatkinIgnoreInTheRepositoryFolderHidesItsPackages) {
+  TempDir ws("crawl_catkin_ignore");
+  write_package(ws.path() / "src" / "some_repo" / "my_description", "my_hand_description");
+  std::ofstream(ws.path() / "src" / "some_repo" / "CATKIN_IGNORE").flush();
+  const std::string hand = write_hand_naming(ws.path() / "hand", "my_hand_description");
+  const std::string ros_package_path = (ws.path() / "src").string();
+  ScopedEnv ros("ROS_PACKAGE_PATH", ros_package_path);
+  ScopedEnv ament("AMENT_PREFIX_PATH", std::nullopt);
+  const std::string what = load_error(hand);
+  EXPECT_EQ(what.rfind("load_hand: '", 0), 0u) << what;
+  EXPECT_NE(what.find("package_uri.urdf'"), std::string::npos) << what;
+  EXPECT_NE(what.find("ROS package 'my_hand_description' not found (searched package_paths {}, "
+                      "ROS_PACKAGE_PATH '" + ros_package_path + "' (0 package.xml), "
+                      "AMENT_PREFIX_PATH unset)"),
+            std::string::npos)
+      << what;
+}
+
+TEST(UrdfImportRosPackageCrawl, PackageInsideAPackageIsNotFound) {
+  TempDir ws("crawl_nested_package");
+  const fs::path outer = ws.path() / "src" / "outer";
+  write_package(outer, "outer_package");
+  write_package(outer / "inner", "my_hand_description");
+  const std::string hand = write_hand_naming(ws.path() / "hand", "my_hand_description");
+  ScopedEnv ros("ROS_PACKAGE_PATH", (ws.path() / "src").string());
+  ScopedEnv ament("AMENT_PREFIX_PATH", std::nullopt);
+  EXPECT_NE(load_error(hand).find("ROS package 'my_hand_description' not found"),
+            std::string::npos);
+  // The outer package is one: its meshes load.
+  expect_meshes_from(load_hand(write_hand_naming(ws.path() / "outer_hand", "outer_package")),
+                     outer);
+}
+
+TEST(UrdfImportRosPackageCrawl, FirstRosPackagePathDirectoryListingTheNameWins) {
+  TempDir first("crawl_first"), second("crawl_second");
+  write_package(first.path() / "repo" / "a", "my_hand_description");
+  write_package(second.path() / "b", "my_hand_description");
+  const std::string hand = write_hand_naming(first.path() / "hand", "my_hand_description");
+  ScopedEnv ament("AMENT_PREFIX_PATH", std::nullopt);
+  {
+    ScopedEnv ros("ROS_PACKAGE_PATH", first.path().string() + ":" + second.path().string());
+    expect_meshes_from(load_hand(hand), first.path() / "repo" / "a");
+  }
+  ScopedEnv ros("ROS_PACKAGE_PATH", second.path().string() + ":" + first.path().string());
+  expect_meshes_from(load_hand(hand), second.path() / "b");
+}
+
+TEST(UrdfImportRosPackageCrawl, ExplicitPackagePathsComeBeforeTheCrawl) {
+  TempDir ws("crawl_explicit_first"), other("crawl_explicit_dir");
+  write_package(ws.path() / "src" / "repo" / "my_description", "my_hand_description");
+  write_package(other.path(), "some_name");  // the option's directory needs no matching name
+  const std::string hand = write_hand_naming(ws.path() / "hand", "my_hand_description");
+  ScopedEnv ros("ROS_PACKAGE_PATH", (ws.path() / "src").string());
+  ScopedEnv ament("AMENT_PREFIX_PATH", std::nullopt);
+  HandLoadOptions options;
+  options.package_paths["my_hand_description"] = other.path().string();
+  expect_meshes_from(load_hand(hand, options), other.path());
+}
+
+TEST(UrdfImportRosPackageCrawl, RosPackagePathComesBeforeAmentPrefixPath) {
+  TempDir ws("crawl_before_ament"), prefix("crawl_ament_prefix");
+  write_package(ws.path() / "src" / "repo" / "my_description", "my_hand_description");
+  write_package(prefix.path() / "share" / "my_hand_description", "my_hand_description");
+  const std::string hand = write_hand_naming(ws.path() / "hand", "my_hand_description");
+  ScopedEnv ament("AMENT_PREFIX_PATH", prefix.path().string());
+  {
+    ScopedEnv ros("ROS_PACKAGE_PATH", (ws.path() / "src").string());
+    expect_meshes_from(load_hand(hand), ws.path() / "src" / "repo" / "my_description");
+  }
+  // share/NAME/package.xml makes an installed package (without the ament index marker).
+  ScopedEnv ros("ROS_PACKAGE_PATH", std::nullopt);
+  expect_meshes_from(load_hand(hand), prefix.path() / "share" / "my_hand_description");
+}
+
+TEST(UrdfImportRosPackageCrawl, AmentShareDirectoryWithoutMarkerOrPackageXmlIsNotAPackage) {
+  TempDir prefix("ament_bare_share");
+  fs::create_directories(prefix.path() / "share" / kPackage / "meshes");
+  fs::copy_file(package_dir() / "meshes" / "tetra.obj",
+                prefix.path() / "share" / kPackage / "meshes" / "tetra.obj");
+  ScopedEnv ros("ROS_PACKAGE_PATH", std::nullopt);
+  ScopedEnv ament("AMENT_PREFIX_PATH", prefix.path().string());
+  const std::string what = load_error(package_hand());
+  EXPECT_NE(what.find("ROS package 'cordgrasp_test_meshes' not found"), std::string::npos) << what;
+  EXPECT_NE(what.find("AMENT_PREFIX_PATH '" + prefix.path().string() + "'"), std::string::npos)
+      << what;
+}
+
+TEST(UrdfImportRosPackageCrawl, SymlinkLoopEndsTheWalkAndThePackageIsFound) {
+  TempDir ws("crawl_symlink_loop");
+  const fs::path package = ws.path() / "src" / "z_repo" / "my_description";
+  write_package(package, "my_hand_description");
+  fs::create_directory_symlink(ws.path() / "src", ws.path() / "src" / "a_loop");
+  const std::string hand = write_hand_naming(ws.path() / "hand", "my_hand_description");
+  ScopedEnv ros("ROS_PACKAGE_PATH", (ws.path() / "src").string());
+  ScopedEnv ament("AMENT_PREFIX_PATH", std::nullopt);
+  // Either path names the package's meshes; the walk met the real folder first (a_loop is the
+  // same directory as src, already walked).
+  expect_meshes_from(load_hand(hand), package);
+}
+
+TEST(UrdfImportRosPackageCrawl, CrawlIsCachedPerRosPackagePathValue) {
+  TempDir ws("crawl_cached");
+  const fs::path package = ws.path() / "src" / "repo" / "my_description";
+  write_package(package, "my_hand_description");
+  const std::string hand = write_hand_naming(ws.path() / "hand", "my_hand_description");
+  ScopedEnv ament("AMENT_PREFIX_PATH", std::nullopt);
+  ScopedEnv ros("ROS_PACKAGE_PATH", (ws.path() / "src").string());
+  expect_meshes_from(load_hand(hand), package);
+  // Moved after the first crawl: the same ROS_PACKAGE_PATH still names the old folder.
+  fs::rename(package, ws.path() / "src" / "repo" / "moved");
+  const std::string what = load_error(hand);
+  EXPECT_NE(what.find("mesh file 'package://my_hand_description/meshes/tetra.obj' not found"),
+            std::string::npos)
+      << what;
+  // A different value (a trailing ':') crawls again and finds the package where it is now.
+  ScopedEnv again("ROS_PACKAGE_PATH", (ws.path() / "src").string() + ":");
+  expect_meshes_from(load_hand(hand), ws.path() / "src" / "repo" / "moved");
 }
 
 }  // namespace
