@@ -11,4 +11,4 @@ out="${1:-$PWD/demo-out}"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j2 --target cordgrasp
 "$build/tools/cordgrasp" run --out-dir "$out"
-echo "demo: outputs in $out (open $out/report.md; pictures $out/*.png)"
+echo "demo: outputs in $out (open $out/report.html in a browser, or $out/report.md)"

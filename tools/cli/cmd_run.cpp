@@ -1,4 +1,4 @@
-// `cordgrasp run`: the main job — plan → validate (Bullet) → render, with report.md.
+// `cordgrasp run`: the main job — plan → validate (Bullet) → render, with report.md and .html.
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -29,7 +29,7 @@ void add_run_command(CLI::App& app) {
   opt->run.picture.size = "800x600";
   CLI::App* cmd = app.add_subcommand(
       "run", "The main job: plan grasps, check them in Bullet (lift, shake), render them, and "
-             "write plan.json, sim.json, PNGs and report.md");
+             "write plan.json, sim.json, PNGs, report.md and report.html");
   cmd->add_option("--hand", opt->run.hand, "Hand description file or shipped hand name")
       ->capture_default_str();
   cmd->add_option("--object,-o", opt->run.object, "Object mesh file or shipped object name")
@@ -73,7 +73,7 @@ void add_run_command(CLI::App& app) {
       std::cout << ", " << out.held << " held through " << to_string(out.report.sim->tests);
     if (const auto& v = out.report.plan.validation)
       std::cout << "\n  " << validation_stats_line(v->stats, out.report.plan.params.grasps);
-    std::cout << "\n  report " << out.report_path << "\n";
+    std::cout << "\n  report " << out.report_path << "\n  page   " << out.html_path << "\n";
     if (!out.report.interrupted.empty()) {
       std::cout << "run: interrupted by " << out.report.interrupted << " during "
                 << out.report.interrupted_at << "; " << opt->run.out_dir

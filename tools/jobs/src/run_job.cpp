@@ -15,6 +15,8 @@
 #include "cordgrasp/jobs/physics_animation.h"
 #include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/physics_settings.h"
+#include "cordgrasp/jobs/report_viewer.h"
+#include "cordgrasp/jobs/run_report_html.h"
 #include "cordgrasp/jobs/text_format.h"
 #include "cordgrasp/jobs/validate_plan.h"
 #include "cordgrasp/jobs/validated_plan_job.h"
@@ -45,7 +47,7 @@ struct RunInputs {
   PictureOptions picture;
   bool physics = false;  ///< tests other than "none"
   SimTests tests;
-  std::string plan_path, report_path, sim_path;
+  std::string plan_path, report_path, html_path, sim_path;
 };
 
 /// Each grasp's physics samples (every 1 / video.frame_rate_hz and at phase ends) for the
@@ -71,6 +73,7 @@ RunInputs load_run_inputs(const RunParams& opt) {
   fs::create_directories(opt.out_dir);  // only once the inputs have loaded
   in.plan_path = (fs::path(opt.out_dir) / "plan.json").string();
   in.report_path = (fs::path(opt.out_dir) / "report.md").string();
+  in.html_path = (fs::path(opt.out_dir) / "report.html").string();
   in.sim_path = (fs::path(opt.out_dir) / "sim.json").string();
   return in;
 }
@@ -97,11 +100,17 @@ void plan_stage(const RunParams& opt, const RunInputs& in, const RunProgress& pr
   write_plan_file(in.plan_path, report->plan, in.hand);
 }
 
-/// Throws NoGraspFound (after writing report.md) when the plan has no grasp.
+/// Writes report.md and report.html.
+void write_reports(const RunInputs& in, const RunReport& report, const ReportViewer& viewer) {
+  write_file_atomically(in.report_path, run_report_markdown(report));
+  write_file_atomically(in.html_path, run_report_html(report, viewer));
+}
+
+/// Throws NoGraspFound (after writing report.md and report.html) when the plan has no grasp.
 void require_grasps(const RunInputs& in, const RunReport& report) {
   const PlanDocument& plan = report.plan;
   if (!plan.grasps.empty()) return;
-  write_file_atomically(in.report_path, run_report_markdown(report));
+  write_reports(in, report, {});
   if (plan.validation && plan.validation->stats.force_closure > 0)
     throw NoGraspFound("run: no grasp of " + in.mesh->name + " with " + in.hand.name +
                        " held in physics (" +
@@ -177,11 +186,19 @@ Image physics_strip(Renderer& renderer, const RunInputs& in, const HandMeshes& m
   return compose_contact_sheet(panels, captions, strip);
 }
 
-/// 3. Pictures: each planned grasp (cords, contacts), its physics frames, a contact sheet.
+/// 3. Pictures: each planned grasp (cords, contacts), its physics frames, a contact sheet, and
+/// its 3D model for report.html's viewer (none, saying why, when three.js is missing).
 /// Returns the number of grasps pictured (fewer than planned when cancelled).
 int render_stage(const RunParams& opt, const RunInputs& in, const RunProgress& progress,
-                 const GraspSamples& samples, RunReport* report) {
+                 const GraspSamples& samples, RunReport* report, ReportViewer* viewer) {
   const auto t = Clock::now();
+  try {
+    write_viewer_scripts(opt.out_dir);
+    viewer->scripts_dir = kViewerDir;
+  } catch (const InputError& e) {
+    viewer->unavailable = e.what();
+    progress("render: no 3D view in report.html: " + viewer->unavailable);
+  }
   const PlanDocument& plan = report->plan;
   const int n = static_cast<int>(plan.grasps.size());
   Renderer renderer;
@@ -230,6 +247,11 @@ int render_stage(const RunParams& opt, const RunInputs& in, const RunProgress& p
                                               opt.video));
     }
     report->pictures.push_back(pics);
+    viewer->models.emplace_back();
+    if (!viewer->scripts_dir.empty()) {
+      viewer->models.back() = "grasp_" + std::to_string(k);
+      write_grasp_model_script(opt.out_dir, viewer->models.back(), in.hand, g, *in.mesh);
+    }
     progress("render: grasp " + std::to_string(k + 1) + "/" + std::to_string(n));
   }
   if (k == n && !tiles.empty()) {
@@ -251,14 +273,16 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   const RunInputs in = load_run_inputs(opt);
   RunOutcome out;
   RunReport& report = out.report;
-  // Writes report.md (stopped early: saying where) and returns what the run did.
+  ReportViewer viewer;
+  // Writes report.md and report.html (stopped early: saying where) and returns what the run did.
   const auto finish = [&](const std::string& reason, const std::string& at) {
     report.interrupted = reason;
     report.interrupted_at = at;
-    write_file_atomically(in.report_path, run_report_markdown(report));
+    write_reports(in, report, viewer);
     if (report.sim)
       for (const SimResult& r : report.sim->results) out.held += r.held();
     out.report_path = in.report_path;
+    out.html_path = in.html_path;
     return std::move(out);
   };
 
@@ -286,7 +310,7 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
                         std::to_string(n) + " grasps");
   }
   if (opt.render) {
-    const int pictured = render_stage(opt, in, progress, samples, &report);
+    const int pictured = render_stage(opt, in, progress, samples, &report, &viewer);
     if (pictured < n)
       return finish(opt.cancel.reason(), "rendering, after " + std::to_string(pictured) +
                                              " of " + std::to_string(n) + " grasps");

@@ -1,5 +1,6 @@
 #pragma once
-// The main job: plan → validate in physics → render → report.md, into one output folder.
+// The main job: plan → validate in physics → render → report.md and report.html, into one
+// output folder.
 #include <functional>
 #include <optional>
 #include <string>
@@ -32,8 +33,8 @@ struct RunParams {
   /// density, squeeze weight) applies to the physics of the unvalidated plan too.
   ValidationParams validation;
   PictureOptions picture;      ///< size of the pictures (view: iso)
-  /// Write PNGs (planned grasps, physics frames, contact sheet) and each grasp's physics
-  /// animation (grasp_K.webp).
+  /// Write PNGs (planned grasps, physics frames, contact sheet), each grasp's physics
+  /// animation (grasp_K.webp) and report.html's 3D models.
   bool render = true;
   VideoParams video;           ///< size and rate of the animations
   std::string out_dir;         ///< output folder, created if missing
@@ -45,20 +46,22 @@ struct RunParams {
 /// What run_job() wrote.
 struct RunOutcome {
   RunReport report;            ///< the plan, the physics (unset with tests "none"), pictures
-  std::string plan_path, sim_path, report_path;  ///< files written ("" when not written)
+  /// Files written ("" when not written); html_path: report.html (run_report_html).
+  std::string plan_path, sim_path, report_path, html_path;
   int held = 0;                ///< grasps held through the tests (the planned pose, once)
 };
 
 /// One progress line ("plan: 3 force-closure grasp(s), 41 attempts").
 using RunProgress = std::function<void(const std::string&)>;
 
-/// Runs the whole job and writes plan.json, sim.json, report.md and PNGs to p.out_dir.
+/// Runs the whole job and writes plan.json, sim.json, report.md, report.html, PNGs and the 3D
+/// models of report.html's viewer (report_viewer.h) to p.out_dir.
 /// Physics sees the plan as written to plan.json, so `cordgrasp validate --plan` reproduces
 /// its outcomes. @throws InputError for bad inputs (before any work), NoGraspFound when
-/// no force-closure grasp was found, or with p.validate none held (plan.json and report.md are
-/// written first). Stopped by p.cancel, it writes plan.json (and sim.json when physics had
-/// begun) with what finished, marked incomplete, and report.md saying so, and returns with
-/// report.interrupted set (NoGraspFound is not thrown then).
+/// no force-closure grasp was found, or with p.validate none held (plan.json, report.md and
+/// report.html are written first). Stopped by p.cancel, it writes plan.json (and sim.json
+/// when physics had begun) with what finished, marked incomplete, and the reports saying so,
+/// and returns with report.interrupted set (NoGraspFound is not thrown then).
 RunOutcome run_job(const RunParams& p, const RunProgress& progress = {});
 
 }  // namespace cordgrasp

@@ -1,0 +1,327 @@
+#include "cordgrasp/jobs/run_report_html.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "cordgrasp/jobs/text_format.h"
+#include "cordgrasp/jobs/trace_plot_svg.h"
+#include "html_text.h"
+
+namespace cordgrasp {
+namespace {
+
+constexpr const char* kStyle = R"(<style>
+body { font-family: sans-serif; color: #222; max-width: 1200px; margin: 1.5em auto;
+       padding: 0 1em; }
+table { border-collapse: collapse; margin: 0.5em 0 1em; }
+th, td { border: 1px solid #ccc; padding: 3px 8px; text-align: left; }
+th { background: #f2f2f2; }
+td.num { text-align: right; }
+td.held { background: #dff2df; } td.slipped { background: #fcefd2; }
+td.dropped, td.unstable { background: #f8dcdc; } td.not-run { color: #888; }
+.warning { background: #fff3cd; border: 1px solid #e0c36a; padding: 0.5em; }
+.note, figcaption { color: #555; font-size: 90%; }
+section.grasp { border-top: 2px solid #ddd; margin-top: 1.5em; }
+figure { display: inline-block; vertical-align: top; margin: 0 1em 1em 0; }
+figure img { border: 1px solid #ddd; max-width: 100%; }
+img.picture, img.animation { width: 480px; }
+.viewer { width: 480px; height: 360px; border: 1px solid #ddd; background: #fafafa; }
+.viewer canvas { display: block; cursor: grab; }
+#selftest { white-space: pre-wrap; font-size: 80%; }
+</style>
+)";
+
+/// First in <head>: records script errors, failed loads and console.error calls for the
+/// self-test, before any other script runs.
+constexpr const char* kErrorCapture = R"(<script>
+window.cordgraspErrors = [];
+window.addEventListener("error", function (e) {
+  var t = e.target;
+  window.cordgraspErrors.push(t && t !== window && (t.src || t.href)
+      ? "failed to load " + (t.src || t.href) : String(e.message));
+}, true);
+window.addEventListener("unhandledrejection", function (e) {
+  window.cordgraspErrors.push("unhandled rejection: " + e.reason);
+});
+(function () {
+  var error = console.error;
+  console.error = function () {
+    window.cordgraspErrors.push(Array.prototype.join.call(arguments, " "));
+    error.apply(console, arguments);
+  };
+})();
+</script>
+)";
+
+/// Last in <body>: a three.js view in every `.viewer[data-model]` (turned, zoomed and moved
+/// with the mouse; drawn on demand), and the self-test cordgraspSelftest().
+constexpr const char* kViewerScript = R"(<script>
+(function () {
+  var background = 0xfafafa;
+  function buffer(base64) {
+    var text = atob(base64), bytes = new Uint8Array(text.length);
+    for (var i = 0; i < text.length; ++i) bytes[i] = text.charCodeAt(i);
+    return bytes.buffer;
+  }
+  function makeView(div) {
+    var name = div.getAttribute("data-model");
+    var models = window.cordgraspModels || {};
+    if (!window.THREE || !THREE.GLTFLoader || !THREE.OrbitControls || !models[name]) {
+      div.textContent = "3D view unavailable: its scripts did not load.";
+      return Promise.reject(new Error("3D view of " + name + ": scripts did not load"));
+    }
+    var w = div.clientWidth, h = div.clientHeight;
+    var renderer = new THREE.WebGLRenderer({ antialias: true });
+    renderer.setPixelRatio(window.devicePixelRatio || 1);
+    renderer.setSize(w, h);
+    renderer.setClearColor(background);
+    div.appendChild(renderer.domElement);
+    var scene = new THREE.Scene();
+    scene.add(new THREE.HemisphereLight(0xffffff, 0x555555, 0.8));
+    var camera = new THREE.PerspectiveCamera(35, w / h, 0.001, 100);
+    camera.up.set(0, 0, 1);  // the object frame's z up
+    var headlight = new THREE.DirectionalLight(0xffffff, 0.6);
+    headlight.position.set(0.5, 1, 1);
+    camera.add(headlight);
+    scene.add(camera);
+    var controls = new THREE.OrbitControls(camera, renderer.domElement);
+    var view = { name: name, renderer: renderer, background: background,
+                 render: function () { renderer.render(scene, camera); } };
+    controls.addEventListener("change", view.render);
+    return new Promise(function (resolve, reject) {
+      new THREE.GLTFLoader().parse(buffer(models[name]), "", function (gltf) {
+        gltf.scene.traverse(function (o) {  // the export gives colours only: matte
+          if (o.isMesh) { o.material.metalness = 0; o.material.roughness = 0.8; }
+        });
+        scene.add(gltf.scene);
+        var box = new THREE.Box3().setFromObject(gltf.scene);
+        var centre = box.getCenter(new THREE.Vector3());
+        var radius = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1e-3);
+        var distance = 0.85 * radius / Math.sin(camera.fov / 2 * Math.PI / 180);
+        camera.position.copy(centre).add(
+            new THREE.Vector3(1, -1.3, 0.9).normalize().multiplyScalar(distance));
+        camera.near = distance / 100;
+        camera.far = distance * 100;
+        camera.updateProjectionMatrix();
+        controls.target.copy(centre);
+        controls.update();
+        view.render();
+        resolve(view);
+      }, function (e) { reject(new Error("3D view of " + name + ": " + e)); });
+    });
+  }
+  var divs = Array.prototype.slice.call(document.querySelectorAll(".viewer[data-model]"));
+  var views = Promise.all(divs.map(function (div) {
+    return makeView(div).catch(function (e) { console.error(String(e)); return null; });
+  }));
+  // Self-test: every image decodes, every 3D view draws, no error. Resolves to
+  // { images: [{src, ok}], views: [{model, pixels, drawn}], errors: [...] }.
+  window.cordgraspSelftest = function () {
+    var images = Array.prototype.slice.call(document.images);
+    var result = { images: [], views: [], errors: [] };
+    return Promise.all(images.map(function (img) {
+      return img.decode().then(function () { return img.naturalWidth > 0; },
+                               function () { return false; })
+          .then(function (ok) { result.images.push({ src: img.getAttribute("src"), ok: ok }); });
+    })).then(function () { return views; }).then(function (list) {
+      list.forEach(function (view) {
+        if (!view) return;
+        view.render();  // read back before the buffer is presented and cleared
+        var gl = view.renderer.getContext();
+        var w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
+        var pixels = new Uint8Array(w * h * 4);
+        gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+        var bg = [(view.background >> 16) & 255, (view.background >> 8) & 255,
+                  view.background & 255], drawn = 0;
+        for (var i = 0; i < pixels.length; i += 4)
+          if (Math.abs(pixels[i] - bg[0]) + Math.abs(pixels[i + 1] - bg[1]) +
+              Math.abs(pixels[i + 2] - bg[2]) > 24) ++drawn;
+        result.views.push({ model: view.name, pixels: w * h, drawn: drawn });
+      });
+    }).catch(function (e) { result.errors.push("self-test: " + e); }).then(function () {
+      result.errors = result.errors.concat(window.cordgraspErrors);
+      return result;
+    });
+  };
+  // report.html?selftest: the result as JSON in #selftest once the page has loaded.
+  if (/[?&]selftest\b/.test(location.search))
+    window.addEventListener("load", function () {
+      window.cordgraspSelftest().then(function (result) {
+        document.getElementById("selftest").textContent = JSON.stringify(result);
+      });
+    });
+})();
+</script>
+)";
+
+std::string num(double v, const char* fmt = "%.3g") { return format_number(v, fmt); }
+
+/// CSS class of an outcome's table cell: "held", "slipped", ..., "not-run".
+std::string outcome_class(Outcome o) {
+  std::string c = to_string(o);
+  std::replace(c.begin(), c.end(), ' ', '-');
+  return c;
+}
+
+/// The physics phases shown as table columns: every phase the results ran, settle aside.
+std::vector<std::string> phase_columns(const SimDocument& sim) {
+  std::vector<std::string> names;
+  for (const SimResult& r : sim.results)
+    for (const PhaseResult& p : r.phases)
+      if (p.name != "settle" && std::find(names.begin(), names.end(), p.name) == names.end())
+        names.push_back(p.name);
+  return names;
+}
+
+/// The physics result of plan grasp k, or nullptr.
+const SimResult* result_of(const RunReport& rep, int k) {
+  if (!rep.sim) return nullptr;
+  const std::vector<int>& idx = rep.sim->grasp_indices;
+  const auto it = std::find(idx.begin(), idx.end(), k);
+  return it == idx.end() ? nullptr : &rep.sim->results[static_cast<size_t>(it - idx.begin())];
+}
+
+void write_summary(const RunReport& rep, std::ostream& html) {
+  const PlanDocument& plan = rep.plan;
+  const int n = static_cast<int>(plan.grasps.size());
+  html << "<p>";
+  if (n == 0) {
+    html << "<strong>No grasp</strong>"
+         << (rep.interrupted.empty() ? "" : " before the interruption") << " ("
+         << plan.stats.attempts << " attempts); report.md says why.</p>\n";
+    return;
+  }
+  html << n << " force-closure grasp" << (n > 1 ? "s" : "") << " in " << num(plan.stats.total_s)
+       << " s.";
+  if (rep.sim) {
+    int held = 0;
+    for (const SimResult& r : rep.sim->results) held += r.held();
+    html << " Physics (Bullet): <strong>" << held << " of " << rep.sim->results.size()
+         << " held</strong> through " << html_escaped(to_string(rep.sim->tests)) << ".";
+  } else {
+    html << " Physics skipped.";
+  }
+  html << "</p>\n";
+}
+
+void write_verdict_table(const RunReport& rep, std::ostream& html) {
+  const PlanDocument& plan = rep.plan;
+  const std::vector<std::string> phases =
+      rep.sim ? phase_columns(*rep.sim) : std::vector<std::string>{};
+  const bool validated = plan.validation.has_value();
+  html << "<table class=\"verdicts\">\n<tr><th>#</th><th>α [rad]</th><th>ε</th>";
+  for (const std::string& p : phases) html << "<th>" << html_escaped(p) << "</th>";
+  html << "<th>shift while closing [mm]</th><th>held</th>"
+       << (validated ? "<th>held trials</th>" : "") << "<th>pictures</th></tr>\n";
+  for (size_t k = 0; k < plan.grasps.size(); ++k) {
+    const Grasp& g = plan.grasps[k];
+    const SimResult* r = result_of(rep, static_cast<int>(k));
+    html << "<tr><td>" << k << "</td><td class=\"num\">" << num(g.alpha_rad, "%.3f")
+         << "</td><td class=\"num\">" << num(g.epsilon, "%.4f") << "</td>";
+    for (const std::string& name : phases) {
+      const PhaseResult* p = r ? r->phase(name) : nullptr;
+      const Outcome o = p ? p->outcome : Outcome::kNotRun;
+      html << "<td class=\"" << outcome_class(o) << "\">" << to_string(o)
+           << (p && !p->detail.empty() ? " (" + html_escaped(p->detail) + ")" : "") << "</td>";
+    }
+    const PhaseResult* close = r ? r->phase("close") : nullptr;
+    html << "<td class=\"num\">" << (close ? num(1e3 * close->translation_m, "%.1f") : "–")
+         << "</td><td class=\"" << (r ? (r->held() ? "held" : "dropped") : "not-run") << "\">"
+         << (r ? (r->held() ? "yes" : "no") : "–") << "</td>";
+    if (validated) {
+      const GraspValidation& v = plan.validation->grasps[k];
+      html << "<td class=\"num\">" << v.held_trials << " / " << v.trials << "</td>";
+    }
+    html << "<td>"
+         << (k < rep.pictures.size() ? "<a href=\"#grasp-" + std::to_string(k) + "\">grasp " +
+                                           std::to_string(k) + "</a>"
+                                     : "–")
+         << "</td></tr>\n";
+  }
+  html << "</table>\n<p class=\"note\">α: skewness (docs/algorithm.md §9). ε: wrench-space "
+          "quality (§8). A phase holds when the object moved and turned less than the "
+          "thresholds in the hand and still touches it (docs/physics.md).</p>\n";
+}
+
+void write_figure(std::ostream& html, const std::string& src, const std::string& css,
+                  const std::string& caption) {
+  html << "<figure><img class=\"" << css << "\" src=\"" << html_escaped(src) << "\" alt=\""
+       << html_escaped(caption) << "\"><figcaption>" << html_escaped(caption)
+       << "</figcaption></figure>\n";
+}
+
+void write_grasp_section(const RunReport& rep, const ReportViewer& viewer, size_t k,
+                         std::ostream& html) {
+  const GraspPictures& p = rep.pictures[k];
+  const SimResult* r = result_of(rep, static_cast<int>(k));
+  html << "<section class=\"grasp\" id=\"grasp-" << k << "\">\n<h2>Grasp " << k;
+  if (r) html << ": " << to_string(r->outcome);
+  html << "</h2>\n";
+  if (!p.planned.empty()) write_figure(html, p.planned, "picture", "planned: cords, contacts");
+  const std::string model = k < viewer.models.size() ? html_escaped(viewer.models[k]) : "";
+  if (!model.empty())
+    html << "<figure><div class=\"viewer\" data-model=\"" << model << "\"></div>"
+         << "<figcaption>3D: drag to turn, wheel to zoom, right-drag to move (<a href=\"" << model
+         << ".glb\">" << model << ".glb</a>)</figcaption></figure>\n";
+  html << "<br>\n";
+  if (!p.animation.empty()) write_figure(html, p.animation, "animation", "the physics, animated");
+  for (const std::string& f : p.snapshots) write_figure(html, f, "strip", "physics: " + f);
+  const std::string plot = trace_plot_svg(p.trace, r);
+  if (!plot.empty())
+    html << "<figure>" << plot << "<figcaption>The object in the hand: shift of its centre of "
+         << "mass and turn, against the planned pose in settle and close, against the pose "
+         << "after closing from lift on.</figcaption></figure>\n";
+  html << "</section>\n";
+}
+
+}  // namespace
+
+std::string run_report_html(const RunReport& rep, const ReportViewer& viewer) {
+  const PlanDocument& plan = rep.plan;
+  const std::string title = "cordgrasp run: " + plan.object_name + " · " + plan.hand_name + " · " +
+                            to_string(plan.planner) + " planner";
+  std::ostringstream html;
+  html << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>"
+       << html_escaped(title) << "</title>\n"
+       << kErrorCapture << kStyle << "</head>\n<body>\n<h1>" << html_escaped(title) << "</h1>\n";
+  html << "<p class=\"note\">cordgrasp " << html_escaped(plan.cordgrasp_version)
+       << ". Files: <a href=\"plan.json\">plan.json</a>"
+       << (rep.sim ? ", <a href=\"sim.json\">sim.json</a>" : "")
+       << ", <a href=\"report.md\">report.md</a> (inputs, parameters, every number).</p>\n";
+  if (!rep.interrupted.empty())
+    html << "<p class=\"warning\"><strong>Incomplete: interrupted by "
+         << html_escaped(rep.interrupted) << " during " << html_escaped(rep.interrupted_at)
+         << ".</strong> The files hold only what finished before.</p>\n";
+  write_summary(rep, html);
+  if (!plan.grasps.empty()) write_verdict_table(rep, html);
+  if (!rep.sheet.empty()) write_figure(html, rep.sheet, "sheet", "all grasps");
+  if (!viewer.unavailable.empty())
+    html << "<p class=\"warning\">3D view unavailable: " << html_escaped(viewer.unavailable)
+         << "</p>\n";
+  for (size_t k = 0; k < rep.pictures.size(); ++k) write_grasp_section(rep, viewer, k, html);
+
+  html << "<h2>Timings</h2>\n<table>\n<tr><th>stage</th><th>wall [s]</th></tr>\n"
+       << "<tr><td>planning</td><td class=\"num\">" << num(rep.plan_wall_s) << "</td></tr>\n";
+  if (rep.sim)
+    html << "<tr><td>physics</td><td class=\"num\">" << num(rep.sim_wall_s) << "</td></tr>\n";
+  if (!rep.pictures.empty())
+    html << "<tr><td>rendering</td><td class=\"num\">" << num(rep.render_wall_s) << "</td></tr>\n";
+  html << "</table>\n";
+  const bool views = std::any_of(viewer.models.begin(), viewer.models.end(),
+                                 [](const std::string& m) { return !m.empty(); });
+  if (views && !viewer.scripts_dir.empty()) {
+    const std::string dir = html_escaped(viewer.scripts_dir);
+    html << "<p class=\"note\">3D view: three.js r111 from Debian's libjs-three, MIT licence "
+         << "(<a href=\"" << dir << "/copyright\">" << dir << "/copyright</a>).</p>\n"
+         << "<script src=\"" << dir << "/three.min.js\"></script>\n<script src=\"" << dir
+         << "/GLTFLoader.js\"></script>\n<script src=\"" << dir
+         << "/OrbitControls.js\"></script>\n";
+    for (const std::string& m : viewer.models)
+      if (!m.empty()) html << "<script src=\"" << html_escaped(m) << ".glb.js\"></script>\n";
+  }
+  html << "<pre id=\"selftest\"></pre>\n" << kViewerScript << "</body>\n</html>\n";
+  return html.str();
+}
+
+}  // namespace cordgrasp
