@@ -204,6 +204,15 @@ TEST(TracePlotSvg, ShadesAndNamesEachPhaseOnceWithSegmentsInTheirPhase) {
   EXPECT_NE(svg.find("simulated time [s]"), std::string::npos);
 }
 
+TEST(TracePlotSvg, TimeTicksAreRoundNumbers) {
+  std::vector<TraceSample> trace = slipping_trace();
+  for (TraceSample& s : trace) s.sim_time_s += 0.0197917;  // the first sample after a step
+  const std::string svg = trace_plot_svg(trace, nullptr);
+  EXPECT_EQ(svg.find("0.0197917"), std::string::npos) << svg;
+  for (const char* tick : {">0.2</text>", ">0.4</text>", ">0.6</text>", ">0.8</text>"})
+    EXPECT_NE(svg.find(tick), std::string::npos) << tick;
+}
+
 TEST(TracePlotSvg, EveryPointLiesInsideThePlotArea) {
   TracePlotParams size;
   const std::string svg = trace_plot_svg(slipping_trace(), nullptr, size);

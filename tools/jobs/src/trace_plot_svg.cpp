@@ -18,9 +18,9 @@ constexpr const char* kTurnColor = "#d95f02";
 /// The phase a sample belongs to: "shake x" (a segment's end) belongs to "shake".
 std::string phase_of(const TraceSample& s) { return s.phase.substr(0, s.phase.find(' ')); }
 
-/// A round tick step giving about four intervals up to `max` (> 0).
+/// A round tick step (1, 2 or 5 × 10^k) giving two to five intervals up to `max` (> 0).
 double tick_step(double max) {
-  const double raw = max / 4.0;
+  const double raw = max / 5.0;
   const double decade = std::pow(10.0, std::floor(std::log10(raw)));
   for (const double m : {1.0, 2.0, 5.0})
     if (m * decade >= raw) return m * decade;
@@ -115,16 +115,19 @@ std::string trace_plot_svg(const std::vector<TraceSample>& trace, const SimResul
         << px(y(v, turn)) << "\" y2=\"" << px(y(v, turn)) << "\" stroke=\"" << kTurnColor
         << "\"/><text x=\"" << px(w - kRight_px + 6) << "\" y=\"" << px(y(v, turn) + 4)
         << "\" fill=\"" << kTurnColor << "\">" << format_number(v) << "</text>\n";
-  const Axis time(t1 - t0);
-  for (double v = 0.0; v <= (t1 - t0) * (1.0 + 1e-9); v += time.step)
-    svg << "<text x=\"" << px(x(t0 + v)) << "\" y=\"" << px(h - kBottom_px + 14)
-        << "\" text-anchor=\"middle\" fill=\"#444\">" << format_number(t0 + v) << "</text>\n";
+  const double t_step = Axis(t1 - t0).step;  // round times: multiples of the step
+  for (double v = t_step * std::ceil(t0 / t_step - 1e-9); v <= t1 + 1e-9 * t_step; v += t_step)
+    svg << "<line x1=\"" << px(x(v)) << "\" x2=\"" << px(x(v)) << "\" y1=\""
+        << px(kTop_px + plot_h) << "\" y2=\"" << px(kTop_px + plot_h + 4)
+        << "\" stroke=\"#999\"/><text x=\"" << px(x(v)) << "\" y=\""
+        << px(h - kBottom_px + 15) << "\" text-anchor=\"middle\" fill=\"#444\">"
+        << format_number(std::abs(v) < 1e-9 * t_step ? 0.0 : v) << "</text>\n";
   svg << "<text x=\"" << px(kLeft_px + 0.5 * plot_w) << "\" y=\"" << px(h - 4)
       << "\" text-anchor=\"middle\" fill=\"#444\">simulated time [s]</text>\n"
       << "<text transform=\"translate(14 " << px(kTop_px + 0.5 * plot_h)
       << ") rotate(-90)\" text-anchor=\"middle\" fill=\"" << kShiftColor << "\">shift [mm]</text>\n"
       << "<text transform=\"translate(" << px(w - 10) << " " << px(kTop_px + 0.5 * plot_h)
-      << ") rotate(90)\" text-anchor=\"middle\" fill=\"" << kTurnColor << "\">turn [°]</text>\n";
+      << ") rotate(-90)\" text-anchor=\"middle\" fill=\"" << kTurnColor << "\">turn [°]</text>\n";
   // The curves, one polyline per phase: the reference pose changes between phases.
   for (const PhaseSpan& p : spans) {
     std::ostringstream shift_pts, turn_pts;
