@@ -117,10 +117,9 @@ std::string trace_plot_svg(const std::vector<TraceSample>& trace, const SimResul
         << "\" fill=\"" << kTurnColor << "\">" << format_number(v) << "</text>\n";
   const double t_step = Axis(t1 - t0).step;  // round times: multiples of the step
   for (double v = t_step * std::ceil(t0 / t_step - 1e-9); v <= t1 + 1e-9 * t_step; v += t_step)
-    svg << "<line x1=\"" << px(x(v)) << "\" x2=\"" << px(x(v)) << "\" y1=\""
-        << px(kTop_px + plot_h) << "\" y2=\"" << px(kTop_px + plot_h + 4)
-        << "\" stroke=\"#999\"/><text x=\"" << px(x(v)) << "\" y=\""
-        << px(h - kBottom_px + 15) << "\" text-anchor=\"middle\" fill=\"#444\">"
+    svg << "<line x1=\"" << px(x(v)) << "\" x2=\"" << px(x(v)) << "\" y1=\"" << px(kTop_px + plot_h)
+        << "\" y2=\"" << px(kTop_px + plot_h + 4) << "\" stroke=\"#999\"/><text x=\"" << px(x(v))
+        << "\" y=\"" << px(h - kBottom_px + 15) << "\" text-anchor=\"middle\" fill=\"#444\">"
         << format_number(std::abs(v) < 1e-9 * t_step ? 0.0 : v) << "</text>\n";
   svg << "<text x=\"" << px(kLeft_px + 0.5 * plot_w) << "\" y=\"" << px(h - 4)
       << "\" text-anchor=\"middle\" fill=\"#444\">simulated time [s]</text>\n"
