@@ -55,11 +55,24 @@ TEST(CliRun, DefaultsWritePlanSimReportAndPictures) {
               std::string::npos);
   }
   EXPECT_NE(report.find("| 0 |"), std::string::npos) << report;
+  // report.html beside it, with each grasp's picture and 3D model (tests/browser opens one).
+  const std::string html = read_text(dir.file("report.html"));
+  for (size_t k = 0; k < n; ++k) {
+    const std::string grasp = "grasp_" + std::to_string(k);
+    EXPECT_NE(html.find("src=\"" + grasp + ".png\""), std::string::npos) << grasp;
+    EXPECT_NE(html.find("src=\"" + grasp + ".glb.js\""), std::string::npos) << grasp;
+    EXPECT_TRUE(fs::exists(dir.path / (grasp + ".glb"))) << grasp;
+  }
+  EXPECT_TRUE(fs::exists(dir.path / "viewer" / "three.min.js"));
   // Nothing half-written is left behind: no temporary files.
-  for (const auto& e : fs::directory_iterator(dir.path))
-    EXPECT_TRUE(e.path().extension() == ".json" || e.path().extension() == ".png" ||
-                e.path().extension() == ".md" || e.path().extension() == ".webp")
+  for (const auto& e : fs::recursive_directory_iterator(dir.path)) {
+    const std::string ext = e.path().extension().string();
+    EXPECT_TRUE(e.is_directory() || ext == ".json" || ext == ".png" || ext == ".md" ||
+                ext == ".webp" || ext == ".html" || ext == ".glb" || ext == ".js" ||
+                e.path().filename() == "copyright")
         << e.path();
+    EXPECT_NE(e.path().filename().string()[0], '.') << e.path();
+  }
   EXPECT_TRUE(r.output.empty() || r.output.find("run [") == std::string::npos) << r.output;
 
   // validate on the written plan reproduces run's physics exactly.

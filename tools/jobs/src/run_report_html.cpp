@@ -229,9 +229,11 @@ void write_verdict_table(const RunReport& rep, std::ostream& html) {
     html << "<td class=\"num\">" << (close ? num(1e3 * close->translation_m, "%.1f") : "–")
          << "</td><td class=\"" << (r ? (r->held() ? "held" : "dropped") : "not-run") << "\">"
          << (r ? (r->held() ? "yes" : "no") : "–") << "</td>";
-    if (validated) {
+    if (validated && k < plan.validation->grasps.size()) {
       const GraspValidation& v = plan.validation->grasps[k];
       html << "<td class=\"num\">" << v.held_trials << " / " << v.trials << "</td>";
+    } else if (validated) {
+      html << "<td>–</td>";
     }
     html << "<td>"
          << (k < rep.pictures.size() ? "<a href=\"#grasp-" + std::to_string(k) + "\">grasp " +
@@ -312,7 +314,7 @@ std::string run_report_html(const RunReport& rep, const ReportViewer& viewer) {
                                  [](const std::string& m) { return !m.empty(); });
   if (views && !viewer.scripts_dir.empty()) {
     const std::string dir = html_escaped(viewer.scripts_dir);
-    html << "<p class=\"note\">3D view: three.js r111 from Debian's libjs-three, MIT licence "
+    html << "<p class=\"note\">3D view: three.js from Debian's libjs-three, MIT licence "
          << "(<a href=\"" << dir << "/copyright\">" << dir << "/copyright</a>).</p>\n"
          << "<script src=\"" << dir << "/three.min.js\"></script>\n<script src=\"" << dir
          << "/GLTFLoader.js\"></script>\n<script src=\"" << dir
