@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <regex>
 #include <string>
@@ -11,6 +12,7 @@
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/shapes.h"
 #include "cordgrasp/jobs/report_viewer.h"
+#include "cordgrasp/jobs/run_job.h"
 #include "cordgrasp/jobs/trace_plot_svg.h"
 #include "test_files.h"
 #include "test_hands.h"
@@ -319,6 +321,33 @@ TEST(ReportViewer, ModelScriptHoldsTheGlbBytes) {
   EXPECT_EQ(from_base64(script.substr(begin, end - begin)), glb);
   for (const auto& entry : fs::directory_iterator(dir.path))  // no scratch file left
     EXPECT_NE(entry.path().filename().string()[0], '.') << entry.path();
+}
+
+TEST(RunJobHtml, WithoutThreeJsTheRunSucceedsAndTheReportSaysWhichFileIsMissing) {
+  const TempDir dir;
+  RunParams p;
+  p.hand = "parallel_gripper";
+  p.object = "box";
+  p.job.plan.grasps = 1;
+  p.validate = false;
+  p.picture.size = "160x120";
+  p.out_dir = dir.path.string();
+  p.viewer.three_js = dir.file("nowhere/three.min.js");
+  std::vector<std::string> progress;
+  const RunOutcome out = run_job(p, [&](const std::string& line) { progress.push_back(line); });
+  ASSERT_EQ(out.html_path, dir.file("report.html"));
+  const std::string html = read_text(out.html_path);
+  EXPECT_NE(html.find("3D view unavailable: report viewer: three.js '" +
+                      dir.file("nowhere/three.min.js") + "' is missing"),
+            std::string::npos)
+      << html;
+  EXPECT_EQ(html.find("class=\"viewer\""), std::string::npos);
+  EXPECT_NE(html.find("src=\"grasp_0.png\""), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir.path / kViewerDir));
+  EXPECT_FALSE(fs::exists(dir.path / "grasp_0.glb"));
+  EXPECT_TRUE(std::any_of(progress.begin(), progress.end(), [](const std::string& line) {
+    return line.find("no 3D view in report.html") != std::string::npos;
+  }));
 }
 
 }  // namespace

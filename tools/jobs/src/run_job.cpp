@@ -193,7 +193,7 @@ int render_stage(const RunParams& opt, const RunInputs& in, const RunProgress& p
                  const GraspSamples& samples, RunReport* report, ReportViewer* viewer) {
   const auto t = Clock::now();
   try {
-    write_viewer_scripts(opt.out_dir);
+    write_viewer_scripts(opt.out_dir, opt.viewer);
     viewer->scripts_dir = kViewerDir;
   } catch (const InputError& e) {
     viewer->unavailable = e.what();

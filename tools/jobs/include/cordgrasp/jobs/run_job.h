@@ -10,6 +10,7 @@
 #include "cordgrasp/jobs/physics_animation.h"
 #include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/render_options.h"
+#include "cordgrasp/jobs/report_viewer.h"
 #include "cordgrasp/jobs/run_report.h"
 #include "cordgrasp/jobs/sim_json.h"
 #include "cordgrasp/sim/grasp_validation.h"
@@ -37,6 +38,9 @@ struct RunParams {
   /// animation (grasp_K.webp) and report.html's 3D models.
   bool render = true;
   VideoParams video;           ///< size and rate of the animations
+  /// three.js files for report.html's 3D view (copied into out_dir/viewer when rendering);
+  /// missing ones leave the report without 3D view, saying why.
+  ViewerSources viewer = default_viewer_sources();
   std::string out_dir;         ///< output folder, created if missing
   /// Stop request, checked in the planner, before each grasp's physics and before each
   /// grasp's pictures; what finished is written, marked incomplete (RunReport::interrupted).
