@@ -291,6 +291,9 @@ TEST(CliInterrupt, RunStopsAfterTheGraspInFlightAndSaysSoInTheReport) {
   const std::string report = read_text((out / "report.md").string());
   EXPECT_NE(report.find("**Incomplete: interrupted by SIGINT during "), std::string::npos)
       << report;
+  const std::string html = read_text((out / "report.html").string());
+  EXPECT_NE(html.find("<strong>Incomplete: interrupted by SIGINT during "), std::string::npos)
+      << html;
   if (sim.at("complete") == false) {
     EXPECT_EQ(sim.at("interrupted"), "SIGINT");
     EXPECT_LT(sim.at("grasps").size(), plan.at("grasps").size());
