@@ -46,8 +46,9 @@ void visit_straddling_triangles(const MeshBvh& bvh, const SlicePlane& f, const R
   while (top > 0) {
     const int index = stack[--top];
     const MeshBvh::Node& node = bvh.nodes[index];
-    const Eigen::Vector3d& c = node.center;
-    const double radius = anx * node.half.x() + any * node.half.y() + anz * node.half.z();
+    const Eigen::Vector3d c = node.center();
+    const Eigen::Vector3d half = node.half();
+    const double radius = anx * half.x() + any * half.y() + anz * half.z();
     const double sc = f.distance(c);
     if (sc - radius > kBoxSlack_m || sc + radius < -kBoxSlack_m) continue;
     // The node's bounding sphere meets the plane inside a disk of at most its radius around
@@ -55,7 +56,7 @@ void visit_straddling_triangles(const MeshBvh& bvh, const SlicePlane& f, const R
     if (region) {
       const double x = f.ax * c.x() + f.ay * c.y() + f.az * c.z() - f.a0;
       const double y = f.bx * c.x() + f.by * c.y() + f.bz * c.z() - f.b0;
-      if (!region->may_meet(x, y, node.radius)) continue;
+      if (!region->may_meet(x, y, half.norm())) continue;
     }
     if (node.count > 0) {
       for (int k = node.first; k < node.first + node.count; ++k) visit(k);
