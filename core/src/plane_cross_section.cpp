@@ -26,10 +26,15 @@ struct RegionTest {
       d[k] = n.dot(t[k]) + kBoxSlack_m;
     }
   }
-  /// False when the disk (x, y; radius) lies entirely outside one edge line.
-  bool may_meet(double x, double y, double radius) const {
-    return nx[0] * x + ny[0] * y - d[0] <= radius && nx[1] * x + ny[1] * y - d[1] <= radius &&
-           nx[2] * x + ny[2] * y - d[2] <= radius;
+  /// False when the disk (x, y; radius()) lies entirely outside one edge line; `radius` is
+  /// called only for a centre outside the triangle (it costs a square root).
+  template <typename Radius>
+  bool may_meet(double x, double y, Radius&& radius) const {
+    const double m0 = nx[0] * x + ny[0] * y - d[0], m1 = nx[1] * x + ny[1] * y - d[1],
+                 m2 = nx[2] * x + ny[2] * y - d[2];
+    if (m0 <= 0.0 && m1 <= 0.0 && m2 <= 0.0) return true;  // radius ≥ 0
+    const double r = radius();
+    return m0 <= r && m1 <= r && m2 <= r;
   }
 };
 
@@ -56,7 +61,7 @@ void visit_straddling_triangles(const MeshBvh& bvh, const SlicePlane& f, const R
     if (region) {
       const double x = f.ax * c.x() + f.ay * c.y() + f.az * c.z() - f.a0;
       const double y = f.bx * c.x() + f.by * c.y() + f.bz * c.z() - f.b0;
-      if (!region->may_meet(x, y, half.norm())) continue;
+      if (!region->may_meet(x, y, [&half] { return half.norm(); })) continue;
     }
     if (node.count > 0) {
       for (int k = node.first; k < node.first + node.count; ++k) visit(k);
