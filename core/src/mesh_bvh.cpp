@@ -29,6 +29,13 @@ struct Builder {
     }
   }
 
+  /// Centre, half size and bounding-sphere radius from the box (stored: the queries' hot path).
+  static void set_sphere(MeshBvh::Node& node) {
+    node.center = 0.5 * (node.lo + node.hi);
+    node.half = 0.5 * (node.hi - node.lo);
+    node.radius = node.half.norm();
+  }
+
   /// Builds the subtree of order[begin, end); a node's box is its triangles' corners (leaf) or
   /// the union of its children's boxes (the same box, in linear total time).
   int build(int begin, int end) {
@@ -39,6 +46,7 @@ struct Builder {
       bounds(begin, end, lo, hi);
       bvh.nodes[index].lo = lo;
       bvh.nodes[index].hi = hi;
+      set_sphere(bvh.nodes[index]);
       bvh.nodes[index].first = begin;
       bvh.nodes[index].count = end - begin;
       return index;
@@ -65,6 +73,7 @@ struct Builder {
     MeshBvh::Node& node = bvh.nodes[index];
     node.lo = bvh.nodes[index + 1].lo.cwiseMin(bvh.nodes[right].lo);
     node.hi = bvh.nodes[index + 1].hi.cwiseMax(bvh.nodes[right].hi);
+    set_sphere(node);
     node.first = right;
     node.count = 0;
     return index;

@@ -26,15 +26,10 @@ struct RegionTest {
       d[k] = n.dot(t[k]) + kBoxSlack_m;
     }
   }
-  /// False when the disk (x, y; radius()) lies entirely outside one edge line; `radius` is
-  /// called only for a centre outside the triangle (it costs a square root).
-  template <typename Radius>
-  bool may_meet(double x, double y, Radius&& radius) const {
-    const double m0 = nx[0] * x + ny[0] * y - d[0], m1 = nx[1] * x + ny[1] * y - d[1],
-                 m2 = nx[2] * x + ny[2] * y - d[2];
-    if (m0 <= 0.0 && m1 <= 0.0 && m2 <= 0.0) return true;  // radius ≥ 0
-    const double r = radius();
-    return m0 <= r && m1 <= r && m2 <= r;
+  /// False when the disk (x, y; radius) lies entirely outside one edge line.
+  bool may_meet(double x, double y, double radius) const {
+    return nx[0] * x + ny[0] * y - d[0] <= radius && nx[1] * x + ny[1] * y - d[1] <= radius &&
+           nx[2] * x + ny[2] * y - d[2] <= radius;
   }
 };
 
@@ -51,9 +46,8 @@ void visit_straddling_triangles(const MeshBvh& bvh, const SlicePlane& f, const R
   while (top > 0) {
     const int index = stack[--top];
     const MeshBvh::Node& node = bvh.nodes[index];
-    const Eigen::Vector3d c = node.center();
-    const Eigen::Vector3d half = node.half();
-    const double radius = anx * half.x() + any * half.y() + anz * half.z();
+    const Eigen::Vector3d& c = node.center;
+    const double radius = anx * node.half.x() + any * node.half.y() + anz * node.half.z();
     const double sc = f.distance(c);
     if (sc - radius > kBoxSlack_m || sc + radius < -kBoxSlack_m) continue;
     // The node's bounding sphere meets the plane inside a disk of at most its radius around
@@ -61,7 +55,7 @@ void visit_straddling_triangles(const MeshBvh& bvh, const SlicePlane& f, const R
     if (region) {
       const double x = f.ax * c.x() + f.ay * c.y() + f.az * c.z() - f.a0;
       const double y = f.bx * c.x() + f.by * c.y() + f.bz * c.z() - f.b0;
-      if (!region->may_meet(x, y, [&half] { return half.norm(); })) continue;
+      if (!region->may_meet(x, y, node.radius)) continue;
     }
     if (node.count > 0) {
       for (int k = node.first; k < node.first + node.count; ++k) visit(k);

@@ -11,16 +11,13 @@ namespace cordgrasp {
 /// geometry.
 struct MeshBvh {
   struct Node {
-    Eigen::Vector3d lo = Eigen::Vector3d::Zero();  ///< box min [m]
-    Eigen::Vector3d hi = Eigen::Vector3d::Zero();  ///< box max [m]
+    Eigen::Vector3d lo = Eigen::Vector3d::Zero();      ///< box min [m]
+    Eigen::Vector3d hi = Eigen::Vector3d::Zero();      ///< box max [m]
+    Eigen::Vector3d center = Eigen::Vector3d::Zero();  ///< (lo + hi) / 2 [m]
+    Eigen::Vector3d half = Eigen::Vector3d::Zero();    ///< (hi − lo) / 2 [m]
+    double radius = 0.0;                               ///< ‖half‖: bounding-sphere radius [m]
     int first = 0;  ///< leaf: first index into `triangles`; inner node: index of right child
     int count = 0;  ///< leaf: number of triangles; 0 marks an inner node (left child = own + 1)
-    /// (lo + hi) / 2 [m].
-    Eigen::Vector3d center() const { return 0.5 * (lo + hi); }
-    /// (hi − lo) / 2 [m].
-    Eigen::Vector3d half() const { return 0.5 * (hi - lo); }
-    /// ‖half‖: bounding-sphere radius [m].
-    double radius() const { return half().norm(); }
   };
   std::vector<Node> nodes;                 ///< nodes[0] is the root; empty for an empty mesh
   std::vector<Eigen::Vector3d> vertices;   ///< Mesh::vertices, same indices [m]
