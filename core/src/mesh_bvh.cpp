@@ -29,17 +29,24 @@ struct Builder {
     }
   }
 
+  /// Centre, half size and bounding-sphere radius from the box (stored: the queries' hot path).
+  static void set_sphere(MeshBvh::Node& node) {
+    node.center = 0.5 * (node.lo + node.hi);
+    node.half = 0.5 * (node.hi - node.lo);
+    node.radius = node.half.norm();
+  }
+
+  /// Builds the subtree of order[begin, end); a node's box is its triangles' corners (leaf) or
+  /// the union of its children's boxes (the same box, in linear total time).
   int build(int begin, int end) {
     const int index = int(bvh.nodes.size());
     bvh.nodes.emplace_back();
-    Eigen::Vector3d lo, hi;
-    bounds(begin, end, lo, hi);
-    bvh.nodes[index].lo = lo;
-    bvh.nodes[index].hi = hi;
-    bvh.nodes[index].center = 0.5 * (lo + hi);
-    bvh.nodes[index].half = 0.5 * (hi - lo);
-    bvh.nodes[index].radius = bvh.nodes[index].half.norm();
     if (end - begin <= max_leaf) {
+      Eigen::Vector3d lo, hi;
+      bounds(begin, end, lo, hi);
+      bvh.nodes[index].lo = lo;
+      bvh.nodes[index].hi = hi;
+      set_sphere(bvh.nodes[index]);
       bvh.nodes[index].first = begin;
       bvh.nodes[index].count = end - begin;
       return index;
@@ -63,8 +70,12 @@ struct Builder {
                        });
     build(begin, mid);
     const int right = build(mid, end);
-    bvh.nodes[index].first = right;
-    bvh.nodes[index].count = 0;
+    MeshBvh::Node& node = bvh.nodes[index];
+    node.lo = bvh.nodes[index + 1].lo.cwiseMin(bvh.nodes[right].lo);
+    node.hi = bvh.nodes[index + 1].hi.cwiseMax(bvh.nodes[right].hi);
+    set_sphere(node);
+    node.first = right;
+    node.count = 0;
     return index;
   }
 };
@@ -92,7 +103,10 @@ MeshBvh build_mesh_bvh(const Mesh& mesh, int max_leaf_triangles, MeshBvhSplit sp
   }
   b.order.resize(n);
   std::iota(b.order.begin(), b.order.end(), 0);
-  bvh.nodes.reserve(2 * (n / max_leaf_triangles + 1));
+  // Median splits leave at least ⌈max_leaf / 2⌉ triangles in a leaf (fewer only for a mesh
+  // that small): at most 2·leaves − 1 nodes, reserved at once (no regrowth copy).
+  const int min_leaf = std::max(1, (max_leaf_triangles + 1) / 2);
+  bvh.nodes.reserve(size_t(2 * (n / min_leaf + 1)));
   b.build(0, n);
   bvh.triangle_ids = b.order;
   bvh.triangles.resize(n);

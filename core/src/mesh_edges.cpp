@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <numeric>
-#include <tuple>
+
+#include "weld_table.h"
 
 namespace cordgrasp::detail {
 
@@ -11,55 +12,69 @@ MeshEdges build_mesh_edges(const Mesh& mesh) {
   const int nv = int(mesh.vertices.size());
   const int nt = int(mesh.triangles.size());
 
-  // Weld: sort referenced vertices by coordinates, equal coordinates share an id.
+  // Weld: referenced vertices with equal coordinates share an id (ids in vertex order).
   std::vector<char> used(nv, 0);
   for (const auto& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) used[t[k]] = 1;
-  std::vector<int> order;
-  order.reserve(nv);
-  for (int i = 0; i < nv; ++i)
-    if (used[i]) order.push_back(i);
-  const auto key = [&](int i) {
-    const auto& p = mesh.vertices[i];
-    return std::make_tuple(p.x(), p.y(), p.z());
-  };
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
   out.weld.assign(nv, -1);
-  for (size_t k = 0; k < order.size(); ++k) {
-    if (k > 0 && key(order[k]) == key(order[k - 1])) {
-      out.weld[order[k]] = out.welded_vertices - 1;
-    } else {
-      out.weld[order[k]] = out.welded_vertices++;
+  {
+    WeldTable table{static_cast<size_t>(nv)};
+    const auto point_of = [&](int i) -> const Eigen::Vector3d& { return mesh.vertices[i]; };
+    for (int i = 0; i < nv; ++i) {
+      if (!used[i]) continue;
+      const int same = table.find_or_insert(mesh.vertices[i], i, point_of);
+      out.weld[i] = same >= 0 ? out.weld[same] : out.welded_vertices++;
     }
   }
 
-  // Undirected edges: (lo, hi, triangle, side) entries sorted, then grouped.
-  struct Entry {
-    int lo, hi, tri, side;
-    bool forward;
+  // Undirected edges, bucketed by their lower welded id (counting sort, linear time); each
+  // bucket holds (hi, 3·triangle + side) in triangle order, then is stably sorted by hi: the
+  // uses of an edge come in (triangle, side) order.
+  const auto side_ends = [&](int t, int s) {
+    return std::array<int, 2>{out.weld[mesh.triangles[t][s]],
+                              out.weld[mesh.triangles[t][(s + 1) % 3]]};
   };
-  std::vector<Entry> entries;
-  entries.reserve(3 * size_t(nt));
-  out.tri_edge.assign(nt, {-1, -1, -1});
+  std::vector<int> bucket(size_t(out.welded_vertices) + 1, 0);
   for (int t = 0; t < nt; ++t)
     for (int s = 0; s < 3; ++s) {
-      const int a = out.weld[mesh.triangles[t][s]];
-      const int b = out.weld[mesh.triangles[t][(s + 1) % 3]];
-      if (a == b) continue;  // collapsed side of a degenerate triangle
-      entries.push_back({std::min(a, b), std::max(a, b), t, s, a < b});
+      const auto [a, b] = side_ends(t, s);
+      if (a != b) ++bucket[size_t(std::min(a, b)) + 1];
     }
-  std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
-    return std::tie(x.lo, x.hi, x.tri, x.side) < std::tie(y.lo, y.hi, y.tri, y.side);
-  });
+  std::partial_sum(bucket.begin(), bucket.end(), bucket.begin());
+  struct Entry {
+    int hi, side_code;  // side_code = 3·triangle + side
+  };
+  std::vector<Entry> entries(size_t(bucket.back()));
+  {
+    std::vector<int> fill(bucket.begin(), bucket.end() - 1);
+    for (int t = 0; t < nt; ++t)
+      for (int s = 0; s < 3; ++s) {
+        const auto [a, b] = side_ends(t, s);
+        if (a == b) continue;  // collapsed side of a degenerate triangle
+        entries[size_t(fill[size_t(std::min(a, b))]++)] = {std::max(a, b), 3 * t + s};
+      }
+  }
+  const auto by_hi = [](const Entry& x, const Entry& y) { return x.hi < y.hi; };
+  out.tri_edge.assign(nt, {-1, -1, -1});
   out.uses.reserve(entries.size());
-  for (size_t k = 0; k < entries.size(); ++k) {
-    const Entry& e = entries[k];
-    if (k == 0 || e.lo != entries[k - 1].lo || e.hi != entries[k - 1].hi) {
-      out.edges.push_back({e.lo, e.hi});
-      out.first_use.push_back(int(out.uses.size()));
+  for (int lo = 0; lo < out.welded_vertices; ++lo) {
+    Entry* first = entries.data() + bucket[size_t(lo)];
+    Entry* last = entries.data() + bucket[size_t(lo) + 1];
+    if (last - first <= 32) {  // insertion sort: stable, and buckets are small on real meshes
+      for (Entry* k = first + 1; k < last; ++k)
+        for (Entry* j = k; j > first && by_hi(*j, *(j - 1)); --j) std::swap(*j, *(j - 1));
+    } else {
+      std::stable_sort(first, last, by_hi);
     }
-    out.tri_edge[e.tri][e.side] = int(out.edges.size()) - 1;
-    out.uses.push_back({e.tri, e.forward});
+    for (Entry* k = first; k < last; ++k) {
+      if (k == first || k->hi != (k - 1)->hi) {
+        out.edges.push_back({lo, k->hi});
+        out.first_use.push_back(int(out.uses.size()));
+      }
+      const int t = k->side_code / 3, s = k->side_code % 3;
+      out.tri_edge[t][s] = int(out.edges.size()) - 1;
+      out.uses.push_back({t, side_ends(t, s)[0] < side_ends(t, s)[1]});
+    }
   }
   out.first_use.push_back(int(out.uses.size()));
   return out;

@@ -15,9 +15,9 @@ struct EdgeUse {
   bool forward = false;  ///< the triangle walks the edge from its lower to its higher vertex id
 };
 
-/// Edge table of a soup after welding vertices at identical coordinates.
+/// Edge table of a soup after welding vertices at identical coordinates (linear time).
 struct MeshEdges {
-  std::vector<int> weld;                     ///< vertex index → welded id
+  std::vector<int> weld;                     ///< vertex index → welded id (vertex-index order)
   int welded_vertices = 0;                   ///< distinct referenced positions
   std::vector<std::array<int, 2>> edges;     ///< (lo, hi) welded ids, sorted
   std::vector<int> first_use;                ///< edges[e] is used by uses[first_use[e] ..

@@ -14,18 +14,17 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <map>
 #include <mutex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
-#include <tuple>
 #include <vector>
 
 #include "cordgrasp/core/atomic_file.h"
 #include "cordgrasp/core/enum_names.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/mesh_properties.h"
+#include "weld_table.h"
 
 namespace cordgrasp {
 namespace fs = std::filesystem;
@@ -50,17 +49,21 @@ namespace {
 /// ROS do). Vertices are welded on exact coordinates so that C is the mean of distinct points.
 /// Triangles with a NaN/inf corner are left out and counted.
 struct SoupBuilder {
-  std::map<std::tuple<double, double, double>, int> index_of;
+  detail::WeldTable index_of;
   Mesh mesh;
   int faces_seen = 0;            ///< faces of any kind (points, lines, polygons)
   int non_finite_triangles = 0;  ///< triangles with a NaN/inf corner
   Eigen::Vector3d first_non_finite = Eigen::Vector3d::Zero();
 
   int add_vertex(const Eigen::Vector3d& v) {
-    auto [it, inserted] =
-        index_of.emplace(std::make_tuple(v.x(), v.y(), v.z()), int(mesh.vertices.size()));
-    if (inserted) mesh.vertices.push_back(v);
-    return it->second;
+    const int id = int(mesh.vertices.size());
+    const int found =
+        index_of.find_or_insert(v, id, [this](int i) -> const Eigen::Vector3d& {
+          return mesh.vertices[size_t(i)];
+        });
+    if (found >= 0) return found;
+    mesh.vertices.push_back(v);
+    return id;
   }
 
   void add_node(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent) {
@@ -184,9 +187,11 @@ void check_off_faces(const std::string& path) {
   std::vector<std::string> lines;  // non-empty lines without comments
   for (std::string line; std::getline(in, line);) {
     line = line.substr(0, line.find('#'));
-    if (line.find_first_not_of(" \t\r") != std::string::npos) lines.push_back(line);
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    if (lines.empty() && line.find("OFF") == std::string::npos) return;  // not OFF: read no more
+    lines.push_back(line);
   }
-  if (lines.empty() || lines[0].find("OFF") == std::string::npos) return;
+  if (lines.empty()) return;
   std::istringstream counts(lines.size() > 1 ? lines[1] : "");
   long long vertices = 0, faces = 0;
   if (!(counts >> vertices >> faces) || vertices < 0 || faces < 0) return;  // assimp's to judge

@@ -52,6 +52,39 @@ TEST(PlaneCrossSection, BvhMatchesBruteForceOnRandomPlanes) {
   for (const Mesh& mesh : test::test_shapes()) expect_bvh_matches_brute_force(mesh, 40, rng);
 }
 
+TEST(MeshBvh, NodeBoxesAreExactlyTheBoundsOfTheirTriangles) {
+  // Boxes are built bottom-up (union of children); each must equal the min/max of the corners
+  // of the triangles below it, computed directly. Random soup, seeded.
+  std::mt19937_64 rng(40);
+  std::uniform_real_distribution<double> u(-0.1, 0.1);
+  Mesh soup;
+  for (int k = 0; k < 3000; ++k) soup.vertices.emplace_back(u(rng), u(rng), u(rng));
+  std::uniform_int_distribution<int> pick(0, 2999);
+  for (int k = 0; k < 5000; ++k) soup.triangles.emplace_back(pick(rng), pick(rng), pick(rng));
+  for (const MeshBvhSplit split : {MeshBvhSplit::kCentroidThenIndex, MeshBvhSplit::kCornerSum}) {
+    const MeshBvh bvh = build_mesh_bvh(soup, 4, split);
+    // Triangle range [first, end) of each node's subtree (leaves are contiguous in order).
+    std::vector<std::pair<int, int>> range(bvh.nodes.size());
+    for (int i = int(bvh.nodes.size()) - 1; i >= 0; --i) {
+      const MeshBvh::Node& n = bvh.nodes[size_t(i)];
+      range[size_t(i)] = n.count > 0 ? std::make_pair(n.first, n.first + n.count)
+                                     : std::make_pair(range[size_t(i) + 1].first,
+                                                      range[size_t(n.first)].second);
+    }
+    for (size_t i = 0; i < bvh.nodes.size(); ++i) {
+      Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+      for (int k = range[i].first; k < range[i].second; ++k)
+        for (int c = 0; c < 3; ++c) {
+          lo = lo.cwiseMin(bvh.vertices[size_t(bvh.triangles[size_t(k)][c])]);
+          hi = hi.cwiseMax(bvh.vertices[size_t(bvh.triangles[size_t(k)][c])]);
+        }
+      ASSERT_EQ(bvh.nodes[i].lo, lo) << "node " << i;
+      ASSERT_EQ(bvh.nodes[i].hi, hi) << "node " << i;
+    }
+    EXPECT_EQ(range[0], std::make_pair(0, 5000));
+  }
+}
+
 TEST(PlaneCrossSection, SharedEdgesGiveOnePointPerCrossingOfAClosedSurface) {
   // A closed manifold: every crossing point is shared by exactly two segments.
   const Mesh sphere = make_sphere_mesh(0.04, 16, 32);

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "cordgrasp/core/shape_builders.h"
 #include "cordgrasp/core/shapes.h"
 
@@ -48,6 +50,38 @@ TEST(MeshTopology, SoupWithOneVertexCopyPerTriangleIsWeldedBeforeCounting) {
   EXPECT_EQ(soup.edges, shared.edges);
   EXPECT_EQ(soup.components, 1);
   EXPECT_EQ(soup.euler_characteristic, 2);
+}
+
+TEST(MeshTopology, SignedZeroCopiesWeldAndAFanHubKeepsItsEdges) {
+  // A box with a corner at the origin, one vertex copy per triangle, and the zero coordinates
+  // of every other copy written as -0.0: -0.0 == +0.0, so the copies weld as before.
+  Mesh box = make_box_mesh({0.1, 0.2, 0.3});
+  Eigen::Vector3d corner = box.vertices[0];
+  for (const auto& v : box.vertices) corner = corner.cwiseMin(v);
+  for (auto& v : box.vertices) v -= corner;
+  Mesh soup = unshare_vertices(box);
+  for (size_t i = 0; i < soup.vertices.size(); i += 2)
+    for (int c = 0; c < 3; ++c)
+      if (soup.vertices[i][c] == 0.0) soup.vertices[i][c] = -0.0;
+  const MeshTopology t = mesh_topology(soup);
+  EXPECT_TRUE(t.closed);
+  EXPECT_EQ(t.vertices, 8);
+  EXPECT_EQ(t.edges, 18);
+  EXPECT_EQ(t.misoriented_edges, 0);
+  
+  // A disk fanned from one hub vertex: the hub's edge bucket is large (> 32 entries).
+  Mesh fan;
+  fan.vertices.push_back(Eigen::Vector3d::Zero());
+  const int rim = 100;
+  for (int k = 0; k < rim; ++k)
+    fan.vertices.emplace_back(std::cos(2 * M_PI * k / rim), std::sin(2 * M_PI * k / rim), 0.0);
+  for (int k = 0; k < rim; ++k) fan.triangles.emplace_back(0, 1 + k, 1 + (k + 1) % rim);
+  const MeshTopology f = mesh_topology(fan);
+  EXPECT_EQ(f.vertices, rim + 1);
+  EXPECT_EQ(f.edges, 2 * rim);
+  EXPECT_EQ(f.boundary_edges, rim);
+  EXPECT_EQ(f.misoriented_edges, 0);
+  EXPECT_EQ(f.euler_characteristic, 1);
 }
 
 TEST(MeshTopology, MissingFaceLeavesBoundaryLoop) {
