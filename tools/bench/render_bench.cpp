@@ -107,6 +107,16 @@ void BM_EncodePng1024x768(benchmark::State& state) {
 }
 BENCHMARK(BM_EncodePng1024x768)->Unit(benchmark::kMillisecond);
 
+// The picture settings of an animation frame: 640×480, no supersampling (the scene: no ground).
+cordgrasp::RenderParams animation_frame_params(cordgrasp::Scene& scene) {
+  scene.ground = cordgrasp::Ground::kNone;
+  cordgrasp::RenderParams params;
+  params.width_px = 640;
+  params.height_px = 480;
+  params.supersample = 1;
+  return params;
+}
+
 // One frame of a physics animation (`validate --video`, run's report): the SAH scene at
 // 640×480, no supersampling, rendered then added to an animated WebP. 25 frames of the mug
 // moving 1 mm per frame, so the encoder sees motion. Argument: encoder effort (0 … 6).
@@ -117,12 +127,8 @@ void BM_AnimationFrame640x480(benchmark::State& state) {
     state.SkipWithError("shared dataset absent");
     return;
   }
-  scene.ground = cordgrasp::Ground::kNone;
   cordgrasp::Renderer renderer;
-  cordgrasp::RenderParams params;
-  params.width_px = 640;
-  params.height_px = 480;
-  params.supersample = 1;
+  cordgrasp::RenderParams params = animation_frame_params(scene);
   params.camera = cordgrasp::frame_scenes({scene}, params);
   cordgrasp::AnimationParams anim;
   anim.effort = static_cast<int>(state.range(0));
@@ -138,7 +144,8 @@ void BM_AnimationFrame640x480(benchmark::State& state) {
       scene.meshes.front().X_WM.translation().z() -= 25e-3;
     }
   }
-  if (frames >= 25) state.counters["bytes_per_frame"] = static_cast<double>(bytes) / (frames - frames % 25);
+  if (frames >= 25)
+    state.counters["bytes_per_frame"] = static_cast<double>(bytes) / (frames - frames % 25);
 }
 BENCHMARK(BM_AnimationFrame640x480)
     ->Arg(0)
@@ -155,12 +162,8 @@ void BM_RenderFrame640x480(benchmark::State& state) {
     state.SkipWithError("shared dataset absent");
     return;
   }
-  scene.ground = cordgrasp::Ground::kNone;
   cordgrasp::Renderer renderer;
-  cordgrasp::RenderParams params;
-  params.width_px = 640;
-  params.height_px = 480;
-  params.supersample = 1;
+  const cordgrasp::RenderParams params = animation_frame_params(scene);
   for (auto _ : state) benchmark::DoNotOptimize(renderer.render(scene, params));
 }
 BENCHMARK(BM_RenderFrame640x480)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -2,11 +2,11 @@
 
 #include <cmath>
 #include <map>
-#include <cstdio>
 #include <stdexcept>
 
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/jobs/hand_scene.h"
+#include "cordgrasp/jobs/text_format.h"
 #include "cordgrasp/render/animation.h"
 #include "cordgrasp/render/text.h"
 
@@ -16,12 +16,6 @@ namespace {
 // Sample `s` belongs to phase `name` ("shake" covers its segments "shake x" ...).
 bool in_phase(const PhaseSnapshot& s, const std::string& name) {
   return s.phase == name || s.phase.rfind(name + " ", 0) == 0;
-}
-
-std::string fixed(double value, int digits) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", digits, value);
-  return text;
 }
 
 const Rgba kFailRed(0.82, 0.12, 0.10, 1.0);
