@@ -624,7 +624,12 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   // Preferred height: jaws meet the object 2 cm below their tips (as the shipped grippers);
   // fingered hands 1.5 cm behind the front of the palm's bounds (which hold knuckles and thumb
   // base), or at the fingertips' midpoint when that is lower.
-  const double target_h = nf == 2 ? tips_top - 0.02 : std::min(mid_h, palm_top - 0.015);
+  // Opposed digits standing up from the palm: halfway from the palm's front to where the
+  // fingertips meet.
+  const double target_h =
+      opposed   ? palm_top + 0.5 * ((meet.p_W - palm_c).dot(normal_W) - palm_top)
+      : nf == 2 ? tips_top - 0.02
+                : std::min(mid_h, palm_top - 0.015);
   hand.gcp.link = palm;
   for (int k = 0; k <= 20; ++k) {
     const double h = lo + (hi - lo) * k / 20.0;
