@@ -29,9 +29,6 @@ constexpr double kStep = 1e-3;
 /// Revolute limits count as asymmetric (a flexion joint) when the larger side exceeds the
 /// smaller by this fraction of the range.
 constexpr double kAsymmetry = 0.2;
-/// The flexion normal and the direction from the digits' roots to the fingertips' meeting point
-/// agree when they are at most this far apart [rad].
-constexpr double kWitnessAgreement_rad = 45.0 * M_PI / 180.0;
 /// A digit opposes along an axis when its closing motion has at least this cosine with it.
 constexpr double kOpposingCosine = 0.5;
 /// The thumb by position is ambiguous below this confidence; then the digit whose closing
@@ -185,23 +182,25 @@ hand_draft::ClosingDigit closing_digit(const HandModel& hand, const DraftFinger&
     const Eigen::Vector3d towards = others_W - tip_W;
     if (v.norm() < 1e-9 || towards.norm() < 1e-9) continue;
     const double c = v.normalized().dot(towards.normalized());
-    if (std::abs(c) >= kMinClosingCosine) d.closed_q.push_back({j, c > 0 ? joint.upper : joint.lower});
+    if (std::abs(c) >= kMinClosingCosine)
+      d.closed_q.push_back({j, c > 0 ? joint.upper : joint.lower});
   }
   // Mid-closure: the digit curls at most kMaxCurl_rad in all (its <mimic> joints included), so
   // that a long digit's tip is not swept back into the palm.
   double curl = 0.0;
   for (const auto& [j, closed] : d.closed_q) curl += std::abs(closed - q0[j]);
-  for (const Joint& joint : hand.joints)
-    if (joint.mimic && std::find(f.links.begin(), f.links.end(), joint.child_link) != f.links.end())
-      for (const auto& [j, closed] : d.closed_q)
-        if (j == joint.mimic->master_joint)
-          curl += std::abs(joint.mimic->multiplier * (closed - q0[j]));
+  for (const Joint& joint : hand.joints) {
+    if (!joint.mimic ||
+        std::find(f.links.begin(), f.links.end(), joint.child_link) == f.links.end())
+      continue;
+    for (const auto& [j, closed] : d.closed_q)
+      if (j == joint.mimic->master_joint)
+        curl += std::abs(joint.mimic->multiplier * (closed - q0[j]));
+  }
   if (curl > kMaxCurl_rad)
     for (auto& [j, closed] : d.closed_q) closed = q0[j] + (closed - q0[j]) * kMaxCurl_rad / curl;
   return d;
 }
-
-double degrees(double rad) { return rad * 180.0 / M_PI; }
 
 /// Lowest common ancestor link of the fingers' roots (the palm).
 int palm_link(const HandModel& hand, const std::vector<DraftFinger>& fingers) {

@@ -12,9 +12,9 @@ namespace cordgrasp::hand_draft {
 
 /// One digit: its fingertip and the joints that close it, each with its closed value.
 struct ClosingDigit {
-  int tip_link = -1;                                     ///< link holding the fingertip
-  Eigen::Vector3d p_tip_L = Eigen::Vector3d::Zero();     ///< fingertip in that link [m]
-  std::vector<std::pair<int, double>> closed_q;          ///< joint index, closed value [rad, m]
+  int tip_link = -1;                                  ///< link holding the fingertip
+  Eigen::Vector3d p_tip_L = Eigen::Vector3d::Zero();  ///< fingertip in that link [m]
+  std::vector<std::pair<int, double>> closed_q;       ///< joint index, closed value [rad, m]
 };
 
 /// Sampling of the closing sweep.
@@ -24,12 +24,12 @@ struct MeetingPointParams {
 
 /// The fingertips where they come closest together during the sweep.
 struct MeetingPoint {
-  bool found = false;                               ///< >= 2 digits, >= 1 closing joint
-  Eigen::Vector3d p_W = Eigen::Vector3d::Zero();    ///< centroid of the fingertips there [m]
-  double closure = 0.0;                             ///< fraction of the sweep, 0 open .. 1 closed
-  double spread_open_m = 0.0;                       ///< mean pairwise fingertip distance, open [m]
-  double spread_m = 0.0;                            ///< the same where they come closest [m]
-  std::vector<Eigen::Vector3d> tips_W;              ///< each digit's fingertip there [m]
+  bool found = false;                             ///< >= 2 digits, >= 1 closing joint
+  Eigen::Vector3d p_W = Eigen::Vector3d::Zero();  ///< centroid of the fingertips there [m]
+  double closure = 0.0;                           ///< fraction of the sweep, 0 open .. 1 closed
+  double spread_open_m = 0.0;                     ///< mean pairwise fingertip distance, open [m]
+  double spread_m = 0.0;                          ///< the same where they come closest [m]
+  std::vector<Eigen::Vector3d> tips_W;            ///< each digit's fingertip there [m]
 };
 
 /// Moves every closing joint linearly from `q_open` to its closed value (couplings applied,
