@@ -31,6 +31,10 @@ constexpr double kStep = 1e-3;
 constexpr double kAsymmetry = 0.2;
 /// A digit opposes along an axis when its closing motion has at least this cosine with it.
 constexpr double kOpposingCosine = 0.5;
+/// Two joint axes of a finger flex it the same way when their cosine is at least this.
+constexpr double kSameAxisCosine = 0.7;
+/// A joint axis counts as across its finger when |axis × extension| is at least this.
+constexpr double kMinAcross = 0.7;
 /// The thumb by position is ambiguous below this confidence; then the digit whose closing
 /// motion is the most against the others' is the thumb, when it is so by this much more
 /// (difference of cosines) than the thumb by position.
@@ -381,25 +385,55 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   Eigen::Vector3d extension = Eigen::Vector3d::Zero(), flexion = Eigen::Vector3d::Zero();
   Eigen::Vector3d others_tips = Eigen::Vector3d::Zero();
   int n_others = 0;
-  // Flexion of finger i (one-sided revolute joints towards their larger side), each joint's tip
-  // motion without the finger's own extension.
+  // Flexing joints of finger i: revolute, one-sided limits, the axis along the most distal such
+  // joint's (one across it, a Barrett-like spread, turns the finger sideways).
+  auto one_sided = [&](int j) {
+    const Joint& joint = hand.joints[j];
+    const double up = joint.upper - q0[j], down = q0[j] - joint.lower;
+    return joint.type == JointType::kRevolute &&
+           std::abs(up - down) >= kAsymmetry * (joint.upper - joint.lower);
+  };
+  auto axis_W = [&](int j) {
+    return Eigen::Vector3d(X0[hand.joints[j].child_link].linear() * hand.joints[j].axis);
+  };
+  auto flexing_joints = [&](size_t i) {
+    Eigen::Vector3d distal_axis = Eigen::Vector3d::Zero();
+    for (int j : fingers[i].joints)
+      if (one_sided(j)) distal_axis = axis_W(j);
+    std::vector<int> out;
+    for (int j : fingers[i].joints)
+      if (one_sided(j) && std::abs(axis_W(j).dot(distal_axis)) >= kSameAxisCosine)
+        out.push_back(j);
+    return out;
+  };
+  // Extension of finger i: from its first flexing joint (else its root) to its centroid.
+  auto finger_extension = [&](size_t i) {
+    const std::vector<int> flexing = flexing_joints(i);
+    const Eigen::Vector3d base =
+        flexing.empty() ? roots[i] : X0[hand.joints[flexing.front()].child_link].translation();
+    return Eigen::Vector3d((centres[i] - base).normalized());
+  };
+  // Flexion of finger i: each flexing joint's tip motion towards its larger side, across the
+  // finger's extension and the joint axis (a fingertip off the finger's centre line, a bent
+  // distal link, does not tilt it).
   auto finger_flexion = [&](size_t i) {
     Eigen::Vector3d flexion = Eigen::Vector3d::Zero();
-    for (int j : fingers[i].joints) {
+    const Eigen::Vector3d e = finger_extension(i);
+    for (int j : flexing_joints(i)) {
       const Joint& joint = hand.joints[j];
-      if (joint.type != JointType::kRevolute) continue;
       const double up = joint.upper - q0[j], down = q0[j] - joint.lower;
-      if (std::abs(up - down) < kAsymmetry * (joint.upper - joint.lower)) continue;
       Eigen::Vector3d v = tip_velocity(hand, fingers[i], q0, j);
-      const Eigen::Vector3d e = (centres[i] - roots[i]).normalized();
       v -= v.dot(e) * e;  // without the finger's own extension
+      const Eigen::Vector3d across = axis_W(j).cross(e);
+      if (across.norm() > kMinAcross && v.norm() > 1e-9)
+        v = (v.dot(across) >= 0 ? 1.0 : -1.0) * across;
       if (v.norm() > 1e-9) flexion += (up > down ? 1.0 : -1.0) * v.normalized();
     }
     return flexion;
   };
   for (size_t i = 0; i < nf; ++i) {
     if (int(i) == thumb) continue;
-    extension += (centres[i] - roots[i]).normalized();
+    extension += finger_extension(i);
     others_tips += tips[i];
     ++n_others;
     flexion += finger_flexion(i);
