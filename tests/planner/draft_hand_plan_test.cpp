@@ -2,6 +2,7 @@
 // conventions and plan force-closure grasps of the shipped box and mug.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <initializer_list>
@@ -78,6 +79,19 @@ void print_comparison(const HandModel& shipped, const HandModel& draft) {
   std::cout << " thumb " << thumb(shipped) << " / " << thumb(draft) << "\n";
 }
 
+/// The drafted palm normal lies within 10° of the shipped one (both on the same link: the
+/// palm the draft finds is the link the shipped description names).
+void expect_palm_normal_near_shipped(const HandModel& shipped, const HandModel& draft) {
+  ASSERT_TRUE(shipped.palm_normal && draft.palm_normal);
+  ASSERT_EQ(shipped.links[shipped.palm_normal->link].name,
+            draft.links[draft.palm_normal->link].name);
+  constexpr double kNormalTol_rad = 10.0 * M_PI / 180.0;
+  const double c = shipped.palm_normal->n_L.normalized().dot(draft.palm_normal->n_L.normalized());
+  EXPECT_LT(std::acos(std::clamp(c, -1.0, 1.0)), kNormalTol_rad)
+      << shipped.name << ": drafted " << draft.palm_normal->n_L.transpose() << ", shipped "
+      << shipped.palm_normal->n_L.transpose();
+}
+
 TEST(DraftHand, NeverSeenThreeDigitClawLoadsFollowsTheConventionsAndPlans) {
   HandDraft draft;
   const HandModel hand = draft_and_load(
@@ -148,6 +162,7 @@ TEST(DraftHand, ShippedPrimitiveHandsDraftsPlan) {
     const HandModel hand = draft_and_load(shipped.urdf_path, name, &draft);
     for (const auto& p : draft.problems) ADD_FAILURE() << p;
     print_comparison(shipped, hand);
+    expect_palm_normal_near_shipped(shipped, hand);
     expect_plans_box_and_mug(hand);
   }
 }
@@ -162,6 +177,7 @@ TEST(DraftHandDataset, EveryStagedHandDraftsAndPlans) {
     const HandModel hand = draft_and_load(shipped.urdf_path, name, &draft);
     for (const auto& p : draft.problems) ADD_FAILURE() << p;
     print_comparison(shipped, hand);
+    expect_palm_normal_near_shipped(shipped, hand);
     expect_plans_box_and_mug(hand);
   }
 }
