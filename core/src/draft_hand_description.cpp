@@ -314,10 +314,9 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   }
   const hand_draft::MeetingPoint meet =
       hand_draft::fingertip_meeting_point(hand, hand.preshape, closing);
-  // Each digit's closing motion: its fingertip from open to the meeting point.
+  // Each digit's closing motion: the way its fingertip starts closing.
   std::vector<Eigen::Vector3d> closing_motion(nf, Eigen::Vector3d::Zero());
-  if (meet.found)
-    for (size_t i = 0; i < nf; ++i) closing_motion[i] = meet.tips_W[i] - tips[i];
+  if (meet.found) closing_motion = meet.start_motion_W;
 
   int thumb = 0;
   double confidence_thumb = 0.0;

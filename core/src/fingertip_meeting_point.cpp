@@ -44,6 +44,10 @@ MeetingPoint fingertip_meeting_point(const HandModel& hand, const Eigen::VectorX
   };
   std::vector<Eigen::Vector3d> best_tips = tips_at(0.0);
   out.spread_open_m = mean_pairwise_distance(best_tips);
+  const double first = 1.0 / (params.samples - 1);
+  const std::vector<Eigen::Vector3d> first_tips = tips_at(first);
+  for (size_t i = 0; i < digits.size(); ++i)
+    out.start_motion_W.push_back((first_tips[i] - best_tips[i]) / first);
   double best = out.spread_open_m;
   for (int k = 1; k < params.samples; ++k) {
     const double s = double(k) / (params.samples - 1);

@@ -30,6 +30,9 @@ struct MeetingPoint {
   double spread_open_m = 0.0;                     ///< mean pairwise fingertip distance, open [m]
   double spread_m = 0.0;                          ///< the same where they come closest [m]
   std::vector<Eigen::Vector3d> tips_W;            ///< each digit's fingertip there [m]
+  /// Each digit's fingertip motion over the sweep's first step, per unit of the closure
+  /// fraction: the way it starts closing [m].
+  std::vector<Eigen::Vector3d> start_motion_W;
 };
 
 /// Moves every closing joint linearly from `q_open` to its closed value (couplings applied,
