@@ -73,10 +73,17 @@ TEST(FingertipMeetingPoint, TwoCurlingDigitsMeetAboveTheMidPlaneWhereTheClosedFo
   EXPECT_NEAR(meet.spread_open_m, 2 * kHalfGap_m, 1e-12);
   EXPECT_LT(meet.spread_m, 2 * tol_m);
 
+  // Each starts closing straight towards the other: +x for the left digit, -x for the right,
+  // at L times the sweep's turn per unit of closure.
+  ASSERT_EQ(meet.start_motion_W.size(), 2u);
+  const double speed_m = kLength_m * kSweep_rad;
+  EXPECT_NEAR(meet.start_motion_W[0].x(), speed_m, 0.01 * speed_m);
+  EXPECT_NEAR(meet.start_motion_W[1].x(), -speed_m, 0.01 * speed_m);
+  EXPECT_LT(std::abs(meet.start_motion_W[0].z()), 0.05 * speed_m);
+
   // The digits close towards each other along x, the palm (x = 0) between their roots.
   std::vector<Eigen::Vector3d> roots{{-kHalfGap_m, 0, 0}, {kHalfGap_m, 0, 0}};
-  std::vector<Eigen::Vector3d> motion{meet.tips_W[0] - Eigen::Vector3d(-kHalfGap_m, 0, kLength_m),
-                                      meet.tips_W[1] - Eigen::Vector3d(kHalfGap_m, 0, kLength_m)};
+  const std::vector<Eigen::Vector3d>& motion = meet.start_motion_W;
   const Eigen::Vector3d axis = main_closing_axis(motion);
   EXPECT_NEAR(std::abs(axis.x()), 1.0, 0.05) << axis.transpose();
   const Opposition o = opposition_across(Eigen::Vector3d::UnitX(), roots, motion,
