@@ -13,6 +13,7 @@
 #include "cordgrasp/core/geometry_points.h"
 #include "cordgrasp/core/hand_conventions.h"
 #include "cordgrasp/core/kinematics.h"
+#include "fingertip_meeting_point.h"
 #include "urdf_import.h"
 
 namespace fs = std::filesystem;
@@ -28,6 +29,26 @@ constexpr double kStep = 1e-3;
 /// Revolute limits count as asymmetric (a flexion joint) when the larger side exceeds the
 /// smaller by this fraction of the range.
 constexpr double kAsymmetry = 0.2;
+/// A digit opposes along an axis when its closing motion has at least this cosine with it.
+constexpr double kOpposingCosine = 0.5;
+/// Two joint axes of a finger flex it the same way when their cosine is at least this.
+constexpr double kSameAxisCosine = 0.7;
+/// A joint axis counts as across its finger when |axis × extension| is at least this.
+constexpr double kMinAcross = 0.7;
+/// The thumb by position is ambiguous below this confidence; then the digit whose closing
+/// motion is the most against the others' is the thumb, when it is so by this much more
+/// (difference of cosines) than the thumb by position.
+constexpr double kAmbiguousThumb = 0.25;
+constexpr double kClearlyMoreAgainst = 0.3;
+/// A digit's joints close together by at most this much in the meeting-point sweep [rad]: a
+/// straight digit then points across the palm.
+constexpr double kMaxCurl_rad = M_PI / 2;
+/// Digits oppose across the palm when the roots of those closing one way lie from the roots of
+/// those closing the other way along the closing axis, at least this cosine.
+constexpr double kRootsApartCosine = 0.85;
+/// ... and when the palm's centroid lies between their roots along that axis, at least this
+/// fraction of the way from either side.
+constexpr double kPalmBetween = 1.0 / 3.0;
 
 struct DraftFinger {
   int root_joint = -1;
@@ -144,6 +165,47 @@ std::vector<DraftFinger> find_fingers(const HandModel& hand) {
   return out;
 }
 
+/// How finger f closes, for the meeting-point sweep: each own revolute joint with one-sided
+/// limits goes to its larger side; one with symmetric limits to the side that moves the tip
+/// towards `others_W` (the other fingertips' centroid), when it moves the tip mostly that way.
+hand_draft::ClosingDigit closing_digit(const HandModel& hand, const DraftFinger& f,
+                                       const Eigen::VectorXd& q0, const Eigen::Vector3d& tip_W,
+                                       const Eigen::Vector3d& others_W) {
+  hand_draft::ClosingDigit d;
+  d.tip_link = f.tip_link;
+  d.p_tip_L = f.p_tip_L;
+  for (int j : f.joints) {
+    const Joint& joint = hand.joints[j];
+    if (joint.type != JointType::kRevolute) continue;
+    const double up = joint.upper - q0[j], down = q0[j] - joint.lower;
+    if (std::abs(up - down) >= kAsymmetry * (joint.upper - joint.lower)) {
+      d.closed_q.push_back({j, up > down ? joint.upper : joint.lower});
+      continue;
+    }
+    const Eigen::Vector3d v = tip_velocity(hand, f, q0, j);
+    const Eigen::Vector3d towards = others_W - tip_W;
+    if (v.norm() < 1e-9 || towards.norm() < 1e-9) continue;
+    const double c = v.normalized().dot(towards.normalized());
+    if (std::abs(c) >= kMinClosingCosine)
+      d.closed_q.push_back({j, c > 0 ? joint.upper : joint.lower});
+  }
+  // Mid-closure: the digit curls at most kMaxCurl_rad in all (its <mimic> joints included), so
+  // that a long digit's tip is not swept back into the palm.
+  double curl = 0.0;
+  for (const auto& [j, closed] : d.closed_q) curl += std::abs(closed - q0[j]);
+  for (const Joint& joint : hand.joints) {
+    if (!joint.mimic ||
+        std::find(f.links.begin(), f.links.end(), joint.child_link) == f.links.end())
+      continue;
+    for (const auto& [j, closed] : d.closed_q)
+      if (j == joint.mimic->master_joint)
+        curl += std::abs(joint.mimic->multiplier * (closed - q0[j]));
+  }
+  if (curl > kMaxCurl_rad)
+    for (auto& [j, closed] : d.closed_q) closed = q0[j] + (closed - q0[j]) * kMaxCurl_rad / curl;
+  return d;
+}
+
 /// Lowest common ancestor link of the fingers' roots (the palm).
 int palm_link(const HandModel& hand, const std::vector<DraftFinger>& fingers) {
   auto path = [&](int link) {
@@ -221,6 +283,41 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     }
     centres[i] /= std::max(n, 1);
   }
+  // The palm: collision points of the links outside the fingers.
+  std::vector<Eigen::Vector3d> palm_pts;
+  Eigen::Vector3d palm_c = Eigen::Vector3d::Zero();
+  {
+    std::vector<bool> in_finger(hand.links.size(), false);
+    for (const DraftFinger& f : fingers)
+      for (int l : f.links) in_finger[l] = true;
+    std::vector<Eigen::Vector3d> pts;
+    for (size_t l = 0; l < hand.links.size(); ++l) {
+      if (in_finger[l]) continue;
+      pts.clear();
+      append_collision_points(hand.links[l], pts);
+      for (const auto& p : pts) palm_pts.push_back(X0[l] * p);
+    }
+    for (const auto& p : palm_pts) palm_c += p / double(palm_pts.size());
+  }
+  // The fingertips' meeting point: every digit closes (one-sided joints to their larger side)
+  // and the fingertips come closest together somewhere in front of the palm.
+  Eigen::Vector3d roots_c = Eigen::Vector3d::Zero(), tips_sum = Eigen::Vector3d::Zero();
+  for (size_t i = 0; i < nf; ++i) {
+    roots_c += roots[i] / double(nf);
+    tips_sum += tips[i];
+  }
+  std::vector<hand_draft::ClosingDigit> closing;
+  for (size_t i = 0; i < nf; ++i) {
+    const Eigen::Vector3d others = nf > 1 ? Eigen::Vector3d((tips_sum - tips[i]) / double(nf - 1))
+                                          : tips[i];
+    closing.push_back(closing_digit(hand, fingers[i], hand.preshape, tips[i], others));
+  }
+  const hand_draft::MeetingPoint meet =
+      hand_draft::fingertip_meeting_point(hand, hand.preshape, closing);
+  // Each digit's closing motion: the way its fingertip starts closing.
+  std::vector<Eigen::Vector3d> closing_motion(nf, Eigen::Vector3d::Zero());
+  if (meet.found) closing_motion = meet.start_motion_W;
+
   int thumb = 0;
   double confidence_thumb = 0.0;
   if (nf > 1) {
@@ -244,34 +341,98 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     confidence_thumb = score[thumb] > 0 ? 1.0 - second / score[thumb] : 0.0;
     if (nf == 2) confidence_thumb = 0.0;
   }
-  guess("thumb", finger_name(hand, fingers[thumb]), confidence_thumb,
-        nf == 2 ? "two fingers: either opposes the other"
-                : "root and tip farthest from the other fingers'");
+  // Opposition: the digit whose closing motion points most against the others' is the thumb
+  // when the layout alone cannot tell (two digits on each side, say).
+  std::string thumb_why = nf == 2 ? "two fingers: either opposes the other"
+                                  : "root and tip farthest from the other fingers'";
+  if (meet.found && nf > 2) {
+    Eigen::Vector3d all_motion = Eigen::Vector3d::Zero();
+    for (const auto& m : closing_motion) all_motion += m;
+    std::vector<double> against(nf, 0.0);
+    for (size_t i = 0; i < nf; ++i) {
+      const Eigen::Vector3d rest = all_motion - closing_motion[i];
+      if (closing_motion[i].norm() > 1e-9 && rest.norm() > 1e-9)
+        against[i] = -closing_motion[i].normalized().dot(rest.normalized());
+    }
+    const int most = int(std::max_element(against.begin(), against.end()) - against.begin());
+    std::ostringstream why;
+    why << std::fixed << std::setprecision(2);
+    if (most == thumb) {
+      why << thumb_why << "; its closing motion is the most against the others' (cosine "
+          << -against[thumb] << ")";
+      confidence_thumb = std::max(confidence_thumb, std::min(0.9, 0.5 * against[thumb]));
+    } else if (confidence_thumb < kAmbiguousThumb && against[most] >= kOpposingCosine &&
+               against[most] - against[thumb] >= kClearlyMoreAgainst &&
+               !fingers[most].driven_elsewhere) {
+      why << "its closing motion points against the others' (cosine " << -against[most]
+          << "; '" << finger_name(hand, fingers[thumb]) << "', farthest from the others, "
+          << -against[thumb] << ")";
+      thumb = most;
+      confidence_thumb = std::min(0.9, 0.5 * against[most]);
+    } else {
+      why << thumb_why << "; but '" << finger_name(hand, fingers[most])
+          << "' closes more against the others (cosine " << -against[most] << " vs "
+          << -against[thumb] << ")";
+      confidence_thumb *= 0.5;
+    }
+    thumb_why = why.str();
+  }
+  guess("thumb", finger_name(hand, fingers[thumb]), confidence_thumb, thumb_why);
 
   // Palm normal: the non-thumb fingers' flexion direction (joints with asymmetric limits,
   // towards the larger side), without its component along the fingers' extension.
   Eigen::Vector3d extension = Eigen::Vector3d::Zero(), flexion = Eigen::Vector3d::Zero();
   Eigen::Vector3d others_tips = Eigen::Vector3d::Zero();
   int n_others = 0;
-  // Flexion of finger i (one-sided revolute joints towards their larger side), each joint's tip
-  // motion without the finger's own extension.
+  // Flexing joints of finger i: revolute, one-sided limits, the axis along the most distal such
+  // joint's (one across it, a Barrett-like spread, turns the finger sideways).
+  auto one_sided = [&](int j) {
+    const Joint& joint = hand.joints[j];
+    const double up = joint.upper - q0[j], down = q0[j] - joint.lower;
+    return joint.type == JointType::kRevolute &&
+           std::abs(up - down) >= kAsymmetry * (joint.upper - joint.lower);
+  };
+  auto axis_W = [&](int j) {
+    return Eigen::Vector3d(X0[hand.joints[j].child_link].linear() * hand.joints[j].axis);
+  };
+  auto flexing_joints = [&](size_t i) {
+    Eigen::Vector3d distal_axis = Eigen::Vector3d::Zero();
+    for (int j : fingers[i].joints)
+      if (one_sided(j)) distal_axis = axis_W(j);
+    std::vector<int> out;
+    for (int j : fingers[i].joints)
+      if (one_sided(j) && std::abs(axis_W(j).dot(distal_axis)) >= kSameAxisCosine)
+        out.push_back(j);
+    return out;
+  };
+  // Extension of finger i: from its first flexing joint (else its root) to its centroid.
+  auto finger_extension = [&](size_t i) {
+    const std::vector<int> flexing = flexing_joints(i);
+    const Eigen::Vector3d base =
+        flexing.empty() ? roots[i] : X0[hand.joints[flexing.front()].child_link].translation();
+    return Eigen::Vector3d((centres[i] - base).normalized());
+  };
+  // Flexion of finger i: each flexing joint's tip motion towards its larger side, across the
+  // finger's extension and the joint axis (a fingertip off the finger's centre line, a bent
+  // distal link, does not tilt it).
   auto finger_flexion = [&](size_t i) {
     Eigen::Vector3d flexion = Eigen::Vector3d::Zero();
-    for (int j : fingers[i].joints) {
+    const Eigen::Vector3d e = finger_extension(i);
+    for (int j : flexing_joints(i)) {
       const Joint& joint = hand.joints[j];
-      if (joint.type != JointType::kRevolute) continue;
       const double up = joint.upper - q0[j], down = q0[j] - joint.lower;
-      if (std::abs(up - down) < kAsymmetry * (joint.upper - joint.lower)) continue;
       Eigen::Vector3d v = tip_velocity(hand, fingers[i], q0, j);
-      const Eigen::Vector3d e = (centres[i] - roots[i]).normalized();
       v -= v.dot(e) * e;  // without the finger's own extension
+      const Eigen::Vector3d across = axis_W(j).cross(e);
+      if (across.norm() > kMinAcross && v.norm() > 1e-9)
+        v = (v.dot(across) >= 0 ? 1.0 : -1.0) * across;
       if (v.norm() > 1e-9) flexion += (up > down ? 1.0 : -1.0) * v.normalized();
     }
     return flexion;
   };
   for (size_t i = 0; i < nf; ++i) {
     if (int(i) == thumb) continue;
-    extension += (centres[i] - roots[i]).normalized();
+    extension += finger_extension(i);
     others_tips += tips[i];
     ++n_others;
     flexion += finger_flexion(i);
@@ -294,6 +455,7 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   Eigen::Vector3d normal_W = flexion - flexion.dot(extension) * extension;
   double confidence_normal = flexion.norm() > 1e-9 ? normal_W.norm() / flexion.norm() : 0.0;
   std::string normal_why = "flexion of the fingers with one-sided joint limits";
+  bool from_flexion = true;
   if (normal_W.norm() < 1e-6) {
     // Parallel jaws: the palm faces where the fingers point: from the palm's centroid to the
     // fingers' geometry centroid, without the jaw-to-jaw component.
@@ -326,8 +488,49 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     }
     confidence_normal = 0.7;
     normal_why = "no flexion joints: along the fingers";
+    from_flexion = false;
   }
   normal_W.normalize();
+  // Second witness: where the fingertips meet. Digits that close towards each other across the
+  // palm (opposed digits standing up from it: the palm lies between them along their closing
+  // axis) make the flexion the opposition axis, not the palm normal: the normal is then the
+  // direction from the digits' roots to the meeting point, without its component along that
+  // axis. Otherwise the meeting point must lie in front of the palm along the flexion normal.
+  bool opposed = false;
+  Eigen::Vector3d opposition_W = Eigen::Vector3d::Zero();
+  if (meet.found) {
+    const Eigen::Vector3d w = meet.p_W - roots_c;
+    // The closing axis: the flexion, or without flexion joints the digits' main closing motion.
+    const Eigen::Vector3d axis_W =
+        from_flexion ? normal_W : hand_draft::main_closing_axis(closing_motion);
+    const hand_draft::Opposition o = hand_draft::opposition_across(axis_W, roots, closing_motion,
+                                                                   palm_c, kOpposingCosine);
+    const Eigen::Vector3d n = w - w.dot(axis_W) * axis_W;
+    std::ostringstream meets;
+    meets << "the fingertips meet at " << num(std::round(meet.closure * 100)) << " % closure";
+    if (o.roots_apart_cosine >= kRootsApartCosine && o.palm_between >= kPalmBetween &&
+        o.palm_between <= 1.0 - kPalmBetween && n.norm() > 1e-6) {
+      opposed = true;
+      opposition_W = axis_W;
+      confidence_normal = std::min(confidence_normal, n.norm() / w.norm());
+      normal_W = n.normalized();
+      normal_why = std::to_string(o.along) + " digits close towards " + std::to_string(o.against) +
+                   " across the palm between them: from the digits' roots to where " +
+                   meets.str() + " (" + num(std::round(w.norm() * 1000)) +
+                   " mm), across that closing axis";
+    } else {
+      const double ahead_m = (meet.p_W - palm_c).dot(normal_W);
+      meets << " " << num(std::round(ahead_m * 1000)) << " mm in front of the palm along it";
+      if (ahead_m > 0.0) {
+        normal_why += "; " + meets.str();
+      } else {
+        confidence_normal *= 0.5;
+        normal_why += "; but " + meets.str() + ": check";
+      }
+    }
+  } else {
+    normal_why += "; no fingertip meeting point (the digits do not close towards each other)";
+  }
   const Eigen::Matrix3d R_WP = X0[palm].linear();
   hand.palm_normal = PalmNormal{palm, R_WP.transpose() * normal_W};
   guess("palm normal", "'" + hand.links[palm].name + "' " + vec(hand.palm_normal->n_L),
@@ -356,8 +559,12 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
         if (towards.norm() < 1e-9) continue;
         towards.normalize();
       }
+      if (opposed && joint.type == JointType::kRevolute) {
+        // Opposed digits close across the palm, towards where the fingertips meet.
+        towards = (meet.p_W - tips[i]).dot(opposition_W) >= 0 ? opposition_W : -opposition_W;
+      }
       double c = v.normalized().dot(towards);
-      if (is_thumb && joint.type != JointType::kPrismatic) {
+      if ((is_thumb || opposed) && joint.type != JointType::kPrismatic) {
         // A revolute thumb closes towards the others, or towards them and the palm's front.
         const double c2 = v.normalized().dot((towards + normal_W).normalized());
         if (std::abs(c2) > std::abs(c)) c = c2;
@@ -380,8 +587,9 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     }
     if (actor.joints.empty()) continue;
     guess("actor " + actor.name, listed.str(), worst,
-          is_thumb ? "tip moves towards the other fingertips"
-                   : "tip moves along the palm normal");
+          opposed    ? "tip moves across the palm towards where the fingertips meet"
+          : is_thumb ? "tip moves towards the other fingertips"
+                     : "tip moves along the palm normal");
     hand.actors.push_back(std::move(actor));
   }
   if (hand.actors.empty())
@@ -408,23 +616,8 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
 
   // GCP: between the thumb tip and the other fingertips, +z along the palm normal, at the
   // height (along it) that passes the convention checks best.
-  Eigen::Vector3d palm_c = Eigen::Vector3d::Zero();
-  double palm_top = -1e9;
-  {
-    std::vector<bool> in_finger(hand.links.size(), false);
-    for (const DraftFinger& f : fingers)
-      for (int l : f.links) in_finger[l] = true;
-    std::vector<Eigen::Vector3d> pts, all;
-    for (size_t l = 0; l < hand.links.size(); ++l) {
-      if (in_finger[l]) continue;
-      pts.clear();
-      append_collision_points(hand.links[l], pts);
-      for (const auto& p : pts) all.push_back(X0[l] * p);
-    }
-    for (const auto& p : all) palm_c += p / double(all.size());
-    for (const auto& p : all) palm_top = std::max(palm_top, (p - palm_c).dot(normal_W));
-    if (all.empty()) palm_top = 0.0;
-  }
+  double palm_top = palm_pts.empty() ? 0.0 : -1e9;
+  for (const auto& p : palm_pts) palm_top = std::max(palm_top, (p - palm_c).dot(normal_W));
   // Laterally: between the tip links' centroids (a tip point is a corner of its finger).
   std::vector<Eigen::Vector3d> tip_centres(nf);
   {
@@ -443,6 +636,9 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   Eigen::Vector3d mid = 0.5 * (tip_centres[thumb] + others_centre);
   mid += (0.5 * (thumb_tip_open + others_tips) - mid).dot(normal_W) * normal_W;
   if (nf == 1) mid = tips[thumb];
+  // Opposed digits: across the palm where the fingertips meet (the thumb side is not "the
+  // others'" side when several digits stand on each).
+  if (opposed) mid = meet.p_W + (mid - meet.p_W).dot(normal_W) * normal_W;
   Eigen::Vector3d x_W = tip_centres[thumb] - mid;
   x_W -= x_W.dot(normal_W) * normal_W;
   if (x_W.norm() < 1e-9) x_W = normal_W.unitOrthogonal();
@@ -460,7 +656,12 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   // Preferred height: jaws meet the object 2 cm below their tips (as the shipped grippers);
   // fingered hands 1.5 cm behind the front of the palm's bounds (which hold knuckles and thumb
   // base), or at the fingertips' midpoint when that is lower.
-  const double target_h = nf == 2 ? tips_top - 0.02 : std::min(mid_h, palm_top - 0.015);
+  // Opposed digits standing up from the palm: halfway from the palm's front to where the
+  // fingertips meet.
+  const double target_h =
+      opposed   ? palm_top + 0.5 * ((meet.p_W - palm_c).dot(normal_W) - palm_top)
+      : nf == 2 ? tips_top - 0.02
+                : std::min(mid_h, palm_top - 0.015);
   hand.gcp.link = palm;
   for (int k = 0; k <= 20; ++k) {
     const double h = lo + (hi - lo) * k / 20.0;

@@ -2,7 +2,10 @@
 // conventions and plan force-closure grasps of the shipped box and mug.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <initializer_list>
 #include <iostream>
 #include <set>
 
@@ -32,9 +35,9 @@ HandModel draft_and_load(const std::string& urdf, const std::string& name, HandD
   return hand;
 }
 
-/// The cord planner finds a force-closure grasp of the shipped box and mug.
-void expect_plans_box_and_mug(const HandModel& hand) {
-  for (const char* object : {"box", "mug"}) {
+/// The cord planner finds a force-closure grasp of each shipped object named.
+void expect_plans(const HandModel& hand, std::initializer_list<const char*> objects) {
+  for (const char* object : objects) {
     const Mesh mesh = load_mesh(test::source_dir() + "/assets/objects/" + object + ".obj");
     auto collider = make_bullet_hand_collider(hand, mesh);
     CordParams cord;
@@ -49,6 +52,9 @@ void expect_plans_box_and_mug(const HandModel& hand) {
     EXPECT_TRUE(result.grasps.front().force_closure);
   }
 }
+
+/// The cord planner finds a force-closure grasp of the shipped box and mug.
+void expect_plans_box_and_mug(const HandModel& hand) { expect_plans(hand, {"box", "mug"}); }
 
 std::set<std::string> actor_joints(const HandModel& h) {
   std::set<std::string> out;
@@ -71,6 +77,19 @@ void print_comparison(const HandModel& shipped, const HandModel& draft) {
     return h.thumb_links.empty() ? std::string("-") : h.links[h.thumb_links.front()].name;
   };
   std::cout << " thumb " << thumb(shipped) << " / " << thumb(draft) << "\n";
+}
+
+/// The drafted palm normal lies within 10° of the shipped one (both on the same link: the
+/// palm the draft finds is the link the shipped description names).
+void expect_palm_normal_near_shipped(const HandModel& shipped, const HandModel& draft) {
+  ASSERT_TRUE(shipped.palm_normal && draft.palm_normal);
+  ASSERT_EQ(shipped.links[shipped.palm_normal->link].name,
+            draft.links[draft.palm_normal->link].name);
+  constexpr double kNormalTol_rad = 10.0 * M_PI / 180.0;
+  const double c = shipped.palm_normal->n_L.normalized().dot(draft.palm_normal->n_L.normalized());
+  EXPECT_LT(std::acos(std::clamp(c, -1.0, 1.0)), kNormalTol_rad)
+      << shipped.name << ": drafted " << draft.palm_normal->n_L.transpose() << ", shipped "
+      << shipped.palm_normal->n_L.transpose();
 }
 
 TEST(DraftHand, NeverSeenThreeDigitClawLoadsFollowsTheConventionsAndPlans) {
@@ -98,6 +117,44 @@ TEST(DraftHand, NeverSeenThreeDigitClawLoadsFollowsTheConventionsAndPlans) {
   expect_plans_box_and_mug(hand);
 }
 
+TEST(DraftHand, NeverSeenOpposedClawTakesItsPalmNormalFromWhereTheFingertipsMeet) {
+  // Two digits and a third opposing them stand up from the palm face (-y of 'base') and curl
+  // towards each other: their flexion runs across the palm, not along its normal.
+  HandDraft draft;
+  const HandModel hand = draft_and_load(
+      test::test_data("hands/opposed_claw/opposed_claw.urdf"), "opposed_claw", &draft);
+  for (const auto& p : draft.problems) ADD_FAILURE() << p;
+  EXPECT_TRUE(check_hand_conventions(hand).empty());
+  ASSERT_TRUE(hand.palm_normal.has_value());
+  ASSERT_EQ(hand.links[hand.palm_normal->link].name, "base");
+  constexpr double kNormalTol_rad = 10.0 * M_PI / 180.0;
+  EXPECT_LT(std::acos(hand.palm_normal->n_L.normalized().dot(-Eigen::Vector3d::UnitY())),
+            kNormalTol_rad)
+      << hand.palm_normal->n_L.transpose();
+  // The GCP lies in front of the palm face (y = -0.015), its +z along the palm normal.
+  const Eigen::Isometry3d& X_LG = hand.gcp.X_LG;
+  EXPECT_LT(X_LG.translation().y(), -0.015);
+  EXPECT_GT(X_LG.linear().col(2).dot(-Eigen::Vector3d::UnitY()), std::cos(kNormalTol_rad));
+  // The lone digit opposing the other two is the thumb; every digit closes with its knuckle
+  // (the tip joints follow by <mimic>), positive motion curling it across the palm.
+  ASSERT_FALSE(hand.thumb_links.empty());
+  EXPECT_EQ(hand.links[hand.thumb_links.front()].name, "right_proximal");
+  ASSERT_EQ(hand.actors.size(), 3u);
+  for (const Actor& a : hand.actors) {
+    ASSERT_EQ(a.joints.size(), 1u) << a.name;
+    EXPECT_NE(hand.joints[a.joints[0].joint].name.find("_flex"), std::string::npos);
+    EXPECT_GT(a.joints[0].direction_speed, 0.0) << a.name;
+  }
+  bool evidence = false;
+  for (const DraftGuess& g : draft.guesses)
+    evidence = evidence || (g.what == "palm normal" &&
+                            g.why.find("where the fingertips meet") != std::string::npos);
+  EXPECT_TRUE(evidence) << "the palm normal guess names its witness";
+  // The mug (8 cm, 11 cm with its handle) does not fit between digits 9 cm apart that open by
+  // 6° only; the box and the cylinder do.
+  expect_plans(hand, {"box", "long_cylinder"});
+}
+
 TEST(DraftHand, ShippedPrimitiveHandsDraftsPlan) {
   for (const char* name : {"cordgrasp_sah", "parallel_gripper"}) {
     const HandModel shipped = load_hand(name);
@@ -105,6 +162,7 @@ TEST(DraftHand, ShippedPrimitiveHandsDraftsPlan) {
     const HandModel hand = draft_and_load(shipped.urdf_path, name, &draft);
     for (const auto& p : draft.problems) ADD_FAILURE() << p;
     print_comparison(shipped, hand);
+    expect_palm_normal_near_shipped(shipped, hand);
     expect_plans_box_and_mug(hand);
   }
 }
@@ -119,6 +177,7 @@ TEST(DraftHandDataset, EveryStagedHandDraftsAndPlans) {
     const HandModel hand = draft_and_load(shipped.urdf_path, name, &draft);
     for (const auto& p : draft.problems) ADD_FAILURE() << p;
     print_comparison(shipped, hand);
+    expect_palm_normal_near_shipped(shipped, hand);
     expect_plans_box_and_mug(hand);
   }
 }

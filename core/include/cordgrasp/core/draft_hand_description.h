@@ -28,9 +28,12 @@ struct HandDraft {
 /// Drafts a hand description for the URDF at `urdf_path`, to be written to `out_path` (the
 /// YAML's `urdf:` is relative to its directory). Fingers are the chains below the palm that end
 /// in one moving leaf; a joint closes its finger when it moves the fingertip mostly along the
-/// palm normal (the thumb: towards the other fingertips), with that sign; the thumb is the
-/// finger farthest from the others; the palm normal is the fingers' flexion direction; the GCP
-/// lies between the thumb tip and the other fingertips with +z along the palm normal.
+/// palm normal (the thumb: towards the other fingertips; opposed digits: towards where the
+/// fingertips meet), with that sign; the thumb is the finger farthest from the others (or, when
+/// that is ambiguous, the one closing most against them); the palm normal is the fingers'
+/// flexion direction, or for digits closing towards each other across the palm the direction
+/// from their roots to where their fingertips meet; the GCP lies between the thumb tip and the
+/// other fingertips with +z along the palm normal.
 /// @throws InputError as load_hand for the URDF, or when no finger is found.
 HandDraft draft_hand_description(const std::string& urdf_path, const std::string& out_path,
                                  const HandLoadOptions& options = {});

@@ -1,0 +1,108 @@
+#include "fingertip_meeting_point.h"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "cordgrasp/core/kinematics.h"
+
+namespace cordgrasp::hand_draft {
+namespace {
+
+/// The meeting point must bring the fingertips this much nearer each other than open, relative
+/// to their open spread (below it the digits do not close towards each other).
+constexpr double kMinRelativeApproach = 1e-3;
+
+double mean_pairwise_distance(const std::vector<Eigen::Vector3d>& p) {
+  double sum = 0.0;
+  int n = 0;
+  for (size_t i = 0; i < p.size(); ++i)
+    for (size_t k = i + 1; k < p.size(); ++k) {
+      sum += (p[i] - p[k]).norm();
+      ++n;
+    }
+  return n ? sum / n : 0.0;
+}
+
+}  // namespace
+
+MeetingPoint fingertip_meeting_point(const HandModel& hand, const Eigen::VectorXd& q_open,
+                                     const std::vector<ClosingDigit>& digits,
+                                     const MeetingPointParams& params) {
+  MeetingPoint out;
+  bool any_joint = false;
+  for (const ClosingDigit& d : digits) any_joint = any_joint || !d.closed_q.empty();
+  if (digits.size() < 2 || !any_joint || params.samples < 2) return out;
+  auto tips_at = [&](double s) {
+    Eigen::VectorXd q = q_open;
+    for (const ClosingDigit& d : digits)
+      for (const auto& [j, closed] : d.closed_q) q[j] = q_open[j] + s * (closed - q_open[j]);
+    q = clamp_to_limits(hand, apply_couplings(hand, clamp_to_limits(hand, q)));
+    const auto X = link_poses(hand, q);
+    std::vector<Eigen::Vector3d> tips;
+    for (const ClosingDigit& d : digits) tips.push_back(X[d.tip_link] * d.p_tip_L);
+    return tips;
+  };
+  std::vector<Eigen::Vector3d> best_tips = tips_at(0.0);
+  out.spread_open_m = mean_pairwise_distance(best_tips);
+  const double first = 1.0 / (params.samples - 1);
+  const std::vector<Eigen::Vector3d> first_tips = tips_at(first);
+  for (size_t i = 0; i < digits.size(); ++i)
+    out.start_motion_W.push_back((first_tips[i] - best_tips[i]) / first);
+  double best = out.spread_open_m;
+  for (int k = 1; k < params.samples; ++k) {
+    const double s = double(k) / (params.samples - 1);
+    std::vector<Eigen::Vector3d> tips = tips_at(s);
+    const double spread = mean_pairwise_distance(tips);
+    if (spread < best) {
+      best = spread;
+      best_tips = std::move(tips);
+      out.closure = s;
+    }
+  }
+  if (!(best < out.spread_open_m * (1.0 - kMinRelativeApproach))) return out;
+  out.found = true;
+  out.spread_m = best;
+  out.tips_W = best_tips;
+  for (const auto& t : best_tips) out.p_W += t / double(best_tips.size());
+  return out;
+}
+
+Eigen::Vector3d main_closing_axis(const std::vector<Eigen::Vector3d>& closing_motion_W) {
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3d& m : closing_motion_W)
+    if (m.norm() > 1e-12) scatter += m.normalized() * m.normalized().transpose();
+  if (scatter.isZero()) return Eigen::Vector3d::Zero();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(scatter);
+  return eig.eigenvectors().col(2);  // eigenvalues ascending
+}
+
+Opposition opposition_across(const Eigen::Vector3d& axis_W,
+                             const std::vector<Eigen::Vector3d>& roots_W,
+                             const std::vector<Eigen::Vector3d>& closing_motion_W,
+                             const Eigen::Vector3d& palm_W, double min_cosine) {
+  Opposition out;
+  Eigen::Vector3d along = Eigen::Vector3d::Zero(), against = Eigen::Vector3d::Zero();
+  for (size_t i = 0; i < roots_W.size() && i < closing_motion_W.size(); ++i) {
+    const Eigen::Vector3d& m = closing_motion_W[i];
+    if (m.norm() < 1e-12) continue;
+    const double c = m.normalized().dot(axis_W);
+    if (c >= min_cosine) {
+      ++out.along;
+      along += roots_W[i];
+    } else if (c <= -min_cosine) {
+      ++out.against;
+      against += roots_W[i];
+    }
+  }
+  if (out.along == 0 || out.against == 0) return out;
+  along /= out.along;
+  against /= out.against;
+  const Eigen::Vector3d apart = against - along;
+  const double gap = apart.dot(axis_W);
+  if (apart.norm() < 1e-12 || std::abs(gap) < 1e-12) return out;
+  out.roots_apart_cosine = gap / apart.norm();
+  out.palm_between = (palm_W - along).dot(axis_W) / gap;
+  return out;
+}
+
+}  // namespace cordgrasp::hand_draft
