@@ -153,7 +153,7 @@ Stats stats_of(std::vector<double> v) {
 }
 
 
-// The summary cells of one group of rows (kSummaryColumns).
+// The summary cells of one group of rows (summary_columns()).
 std::vector<std::string> summary_cells(const std::vector<const BenchRow*>& rows) {
   int ok = 0, no_grasp = 0, error = 0, simulated = 0, held = 0;
   std::vector<double> first_fc, total, alpha, alpha_approach, epsilon, processed;
@@ -196,11 +196,14 @@ std::vector<std::string> summary_cells(const std::vector<const BenchRow*>& rows)
                                      " %)")};
 }
 
-const std::vector<std::string> kSummaryColumns = {
-    "attempts",       "FC grasp found",       "no grasp",         "error",
-    "first FC median [s]", "first FC mean [s]", "first FC sd [s]", "total mean [s]",
-    "α mean [rad]",   "α sd [rad]",           "α approach mean [rad]", "α approach sd [rad]",
-    "ε mean",         "sim held"};
+// Column names of summary_cells(), in order.
+const std::vector<std::string>& summary_columns() {
+  static const std::vector<std::string> kColumns = {
+      "attempts", "FC grasp found", "no grasp", "error", "first FC median [s]",
+      "first FC mean [s]", "first FC sd [s]", "total mean [s]", "α mean [rad]", "α sd [rad]",
+      "α approach mean [rad]", "α approach sd [rad]", "ε mean", "sim held"};
+  return kColumns;
+}
 
 // One Markdown table: header, rule, rows.
 void markdown_table(const BenchSummaryTable& table, std::ostream& out) {
@@ -691,7 +694,8 @@ BenchSummaryTables bench_summary_tables(const std::vector<BenchRow>& rows) {
   t.per_object.columns = {"object", "hand", "planner"};
   t.totals.columns = {"hand", "planner"};
   for (BenchSummaryTable* table : {&t.per_object, &t.totals})
-    table->columns.insert(table->columns.end(), kSummaryColumns.begin(), kSummaryColumns.end());
+    table->columns.insert(table->columns.end(), summary_columns().begin(),
+                          summary_columns().end());
   auto add = [&key_cells](BenchSummaryTable* table, const std::string& key,
                           const std::vector<const BenchRow*>& group) {
     std::vector<std::string> cells = key_cells[key];
