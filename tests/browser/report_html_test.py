@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""report.html of a real `cordgrasp run` or `cordgrasp bench` in headless Chromium (label `browser`).
+"""report.html of a real `cordgrasp run` or `bench` in headless Chromium (ctest label `browser`).
 
 --report run: runs `cordgrasp run` on a cheap shipped input; --report bench: runs a small
 `cordgrasp bench` (two shipped objects, one repeat, lift only). Opens the folder's report.html
