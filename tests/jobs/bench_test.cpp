@@ -37,6 +37,12 @@ std::string shipped_object(const std::string& name) {
   return test::source_dir() + "/assets/objects/" + name + ".obj";
 }
 
+int count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream s;
@@ -353,11 +359,7 @@ TEST(BenchReportHtml, ShowsTheSummaryCellsEveryObjectAndOnlyFilesThatExist) {
     EXPECT_NE(html.find(html_row + "</tr>"), std::string::npos) << html_row;
   }
   // One plot per hand and planner; the self-test of every report.html.
-  int plots = 0;
-  for (size_t at = html.find("<svg class=\"first-fc\""); at != std::string::npos;
-       at = html.find("<svg class=\"first-fc\"", at + 1))
-    ++plots;
-  EXPECT_EQ(plots, 2);
+  EXPECT_EQ(count(html, "<svg class=\"first-fc\""), 2);
   EXPECT_NE(html.find("window.cordgraspSelftest"), std::string::npos);
   EXPECT_EQ(report_link_problems(dir), std::vector<std::string>{});
   // A sheet that is not there is a link the check catches.
@@ -411,6 +413,9 @@ TEST(CliBench, OneAndTwoJobsGiveTheSameRowsAndShardsMergeToThem) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(rows_without_timings(read_rows(merged)), rows_without_timings(rows1));
   EXPECT_EQ(report_link_problems(merged), std::vector<std::string>{});
+  // Both say which shard commands were merged (summary.md as before: a sub-item per shard).
+  EXPECT_EQ(count(read_file(merged + "/report.html"), "<li>merged from: <code>"), 2);
+  EXPECT_EQ(count(read_file(merged + "/summary.md"), "\n  - merged from: `"), 2);
   for (const std::string object : {"box", "sphere"})
     EXPECT_NE(read_file(merged + "/report.html").find("<td>" + object + "</td>"),
               std::string::npos) << object;

@@ -84,7 +84,7 @@ void run_merge(const MergeOptions& opt) {
   info.command = process_command_line();
   for (const auto& s : sources)
     if (!s["command"].get<std::string>().empty())
-      info.command += "`\n  - merged from: `" + s["command"].get<std::string>();
+      info.merged_from.push_back(s["command"].get<std::string>());
   info.machine = machine_description() + " (merge; shards may have run elsewhere: see bench.json)";
   info.attempts_total = attempts_total;
   info.tests = tests;

@@ -713,6 +713,7 @@ std::string bench_summary_markdown(const std::vector<BenchRow>& rows,
   std::ostringstream out;
   out << "# cordgrasp bench summary\n\n";
   out << "- command: `" << info.command << "`\n";
+  for (const std::string& c : info.merged_from) out << "  - merged from: `" << c << "`\n";
   out << "- machine: " << info.machine << "\n";
   out << "- attempts: " << rows.size() << " of " << info.attempts_total;
   if (!info.shard.empty()) out << " (shard " << info.shard << ")";

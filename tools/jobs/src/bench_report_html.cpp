@@ -63,7 +63,14 @@ std::string bench_report_html(const std::vector<BenchRow>& rows, const BenchSumm
          << "and the rest did not run.</p>\n";
   const auto timed_out =
       std::count_if(rows.begin(), rows.end(), [](const BenchRow& r) { return r.timed_out; });
-  html << "<ul>\n<li>command: <code>" << html_escaped(info.command) << "</code></li>\n"
+  html << "<ul>\n<li>command: <code>" << html_escaped(info.command) << "</code>";
+  if (!info.merged_from.empty()) {
+    html << "<ul>";
+    for (const std::string& c : info.merged_from)
+      html << "<li>merged from: <code>" << html_escaped(c) << "</code></li>";
+    html << "</ul>";
+  }
+  html << "</li>\n"
        << "<li>machine: " << html_escaped(info.machine) << "</li>\n"
        << "<li>attempts: " << rows.size() << " of " << info.attempts_total
        << (info.shard.empty() ? "" : " (shard " + html_escaped(info.shard) + ")") << "</li>\n"

@@ -175,6 +175,7 @@ std::vector<BenchRow> merge_bench_rows(const std::vector<std::vector<BenchRow>>&
 /// What summary.md says besides the rows.
 struct BenchSummaryInfo {
   std::string command;     ///< the command line
+  std::vector<std::string> merged_from;  ///< merge: the command lines of the shards merged
   std::string machine;     ///< e.g. "2 cores (nproc), Intel(R) Xeon(R) ..."
   int attempts_total = 0;  ///< attempts of the whole bench (all shards)
   std::string shard;       ///< "k/N", or "" for a whole bench
