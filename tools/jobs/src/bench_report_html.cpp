@@ -103,6 +103,9 @@ std::string bench_report_html(const std::vector<BenchRow>& rows, const BenchSumm
            << r->repeat << "): " << html_escaped(r->error) << "</li>\n";
     html << "</ul>\n";
   }
+  if (info.sheets.empty() && !info.merged_from.empty())
+    html << "<p class=\"note\">Contact sheets: in the shard folders (merge does not copy "
+            "them).</p>\n";
   if (!info.sheets.empty()) {
     html << "<h2>Contact sheets</h2>\n<p class=\"note\">Per object, for each hand and planner, "
             "the attempt whose first grasp has the highest ε.</p>\n";
