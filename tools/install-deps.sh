@@ -28,6 +28,7 @@ PKGS=(
   libwebp-dev                             # render: animated WebP of the physics (WebPAnimEncoder)
   libjs-three                             # report.html: three.js r111 for the 3D view (copied)
   chromium                                # the `browser` tests: report.html in headless Chromium
+  parallel                                # GNU parallel: bench shards on many cores (tests/shard)
 )
 
 missing=()

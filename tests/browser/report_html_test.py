@@ -1,12 +1,15 @@
 #!/usr/bin/env python3
-"""report.html of a real `cordgrasp run` in headless Chromium (ctest label `browser`).
+"""report.html of a real `cordgrasp run` or `bench` in headless Chromium (ctest label `browser`).
 
-Runs `cordgrasp run` on a cheap shipped input, opens report.html in headless Chromium through
-the DevTools protocol (--remote-debugging-pipe; Python standard library only) and checks that
-the page loads with no console error and no request outside its folder, that every image
-decodes and that every 3D view draws the grasp (the page's cordgraspSelftest()). Saves a
-screenshot of the whole page as <out-dir>/report_screenshot.png beside the report
-(<out-dir>/report/). Exit 0: passed, 1: failed, 77: skipped (no Chromium; the reason printed).
+--report run: runs `cordgrasp run` on a cheap shipped input; --report bench: runs a small
+`cordgrasp bench` (two shipped objects, one repeat, lift only). Opens the folder's report.html
+in headless Chromium through the DevTools protocol (--remote-debugging-pipe; Python standard
+library only) and checks that the page loads with no console error and no request outside its
+folder, that every image decodes and that every 3D view draws the grasp (the page's
+cordgraspSelftest()); for run, that a mouse drag turns the first 3D view; for bench, that the
+page has a contact sheet per object and a plot. Saves a screenshot of the whole page as
+<out-dir>/report_screenshot.png beside the report (<out-dir>/report/). Exit 0: passed,
+1: failed, 77: skipped (no Chromium; the reason printed).
 """
 import argparse
 import base64
@@ -21,7 +24,10 @@ import threading
 import time
 
 SKIP = 77
-GRASPS = 2
+GRASPS = 2                           # run: grasps planned, each with a 3D view
+BENCH_OBJECTS = ["box", "sphere"]    # bench: shipped objects, one contact sheet each
+ASSETS = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                      "assets"))
 MIN_DRAWN_SHARE = 0.01  # a 3D view draws the grasp: this share of its pixels not background
 TIMEOUT_S = 90.0        # the whole browser part
 WIDTH_PX = 1280
@@ -140,6 +146,8 @@ def main():
     ap.add_argument("--cordgrasp", required=True, help="the cordgrasp executable")
     ap.add_argument("--chromium", default="", help="the Chromium executable ('' if none)")
     ap.add_argument("--out-dir", required=True, help="folder for the report and the screenshot")
+    ap.add_argument("--report", choices=["run", "bench"], default="run",
+                    help="the command whose report.html is opened")
     args = ap.parse_args()
     if not args.chromium or not os.access(args.chromium, os.X_OK):
         print(f"SKIP: Chromium not found ('{args.chromium}', CMake's CORDGRASP_CHROMIUM); "
@@ -150,11 +158,19 @@ def main():
     folder = os.path.join(out, "report")
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
-    run = subprocess.run(
-        [args.cordgrasp, "run", "--hand", "parallel_gripper", "--object", "box", "--grasps",
-         str(GRASPS), "--quiet", "--out-dir", folder], capture_output=True, text=True)
+    if args.report == "run":
+        command = [args.cordgrasp, "run", "--hand", "parallel_gripper", "--object", "box",
+                   "--grasps", str(GRASPS), "--quiet", "--out-dir", folder]
+    else:
+        command = [args.cordgrasp, "bench", "--objects",
+                   *[os.path.join(ASSETS, "objects", o + ".obj") for o in BENCH_OBJECTS],
+                   "--hands", "cordgrasp_sah", "--planners", "cord", "--repeats", "1",
+                   "--tests", "lift", "--time-limit", "20", "--sheet-size", "320x240",
+                   "--quiet", "--out-dir", folder]
+    run = subprocess.run(command, capture_output=True, text=True)
     if run.returncode != 0:
-        print(f"FAIL: cordgrasp run exited with {run.returncode}:\n{run.stdout}{run.stderr}")
+        print(f"FAIL: cordgrasp {args.report} exited with {run.returncode}:\n"
+              f"{run.stdout}{run.stderr}")
         return 1
     page = os.path.realpath(os.path.join(folder, "report.html"))
     folder_url = "file://" + os.path.dirname(page) + "/"
@@ -194,7 +210,11 @@ def main():
             shot_path = os.path.join(out, "report_screenshot.png")
             with open(shot_path, "wb") as f:
                 f.write(base64.b64decode(shot["data"]))
-            turned = drag_turns_the_first_view(browser, session, deadline)
+            plots = browser.send("Runtime.evaluate", deadline, session, returnByValue=True,
+                                 expression="document.querySelectorAll('svg').length")
+            plots = plots["result"]["value"]
+            turned = (drag_turns_the_first_view(browser, session, deadline)
+                      if args.report == "run" else None)
         except (RuntimeError, queue.Empty) as e:
             print(f"FAIL: the browser did not finish ({e or 'timed out'}); log {log_path}")
             return 1
@@ -203,15 +223,20 @@ def main():
     print(json.dumps(selftest, indent=1))
 
     images = selftest["images"]
-    if len(images) < 2 * GRASPS + 1:  # per grasp its picture and physics strip; the sheet
-        failures.append(f"{len(images)} images, expected at least {2 * GRASPS + 1}")
+    # run: per grasp its picture and physics strip, and the sheet; bench: a sheet per object.
+    want_images = 2 * GRASPS + 1 if args.report == "run" else len(BENCH_OBJECTS)
+    want_views = GRASPS if args.report == "run" else 0
+    if len(images) < want_images:
+        failures.append(f"{len(images)} images, expected at least {want_images}")
     failures += [f"image {i['src']} did not decode" for i in images if not i["ok"]]
-    if len(selftest["views"]) != GRASPS:
-        failures.append(f"{len(selftest['views'])} 3D views drew, expected {GRASPS}")
+    if len(selftest["views"]) != want_views:
+        failures.append(f"{len(selftest['views'])} 3D views drew, expected {want_views}")
     failures += [f"3D view {v['model']}: {v['drawn']} of {v['pixels']} pixels drawn"
                  for v in selftest["views"] if v["drawn"] < MIN_DRAWN_SHARE * v["pixels"]]
     failures += ["page: " + e for e in selftest["errors"]]
-    if not turned:
+    if plots < 1:
+        failures.append("no SVG plot on the page")
+    if turned is False:
         failures.append("dragging the mouse across the first 3D view did not turn it")
     loaded = 0
     for e in browser.events:
@@ -229,11 +254,14 @@ def main():
                             " ".join(str(a.get("value", a.get("description"))) for a in p["args"]))
         elif e["method"] == "Log.entryAdded" and p["entry"]["level"] == "error":
             failures.append(f"log: {p['entry']['text']} ({p['entry'].get('url', '')})")
-    if loaded < 2 * GRASPS + 4:  # images, viewer scripts, models
+    # run: images, viewer scripts, models; bench: the page and its sheets.
+    want_loaded = 2 * GRASPS + 4 if args.report == "run" else 1 + len(BENCH_OBJECTS)
+    if loaded < want_loaded:
         failures.append(f"only {loaded} requests seen: the network record is incomplete")
-    print(f"report {page}\nscreenshot {shot_path}\n{loaded} files loaded; a mouse drag "
-          f"{'turned' if turned else 'did not turn'} the first 3D view; "
-          f"{time.monotonic() - start:.1f} s")
+    drag = ("" if turned is None else
+            f"; a mouse drag {'turned' if turned else 'did not turn'} the first 3D view")
+    print(f"report {page}\nscreenshot {shot_path}\n{loaded} files loaded, {plots} plots"
+          f"{drag}; {time.monotonic() - start:.1f} s")
     for f in failures:
         print("FAIL: " + f)
     return 1 if failures else 0

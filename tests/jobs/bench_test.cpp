@@ -7,11 +7,14 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
 
 #include "cordgrasp/jobs/bench_job.h"
+#include "cordgrasp/jobs/bench_report_html.h"
+#include "cordgrasp/jobs/first_fc_cdf_svg.h"
 #include "cordgrasp/core/error.h"
 #include "test_paths.h"
 
@@ -32,6 +35,12 @@ std::string temp_dir(const std::string& name) {
 
 std::string shipped_object(const std::string& name) {
   return test::source_dir() + "/assets/objects/" + name + ".obj";
+}
+
+int count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
 }
 
 std::string read_file(const std::string& path) {
@@ -57,6 +66,31 @@ std::vector<std::vector<std::string>> rows_without_timings(const std::vector<Ben
     out.push_back(cells);
   }
   return out;
+}
+
+// What is wrong with the links of report.html in `dir`: every href and src must name a file
+// in the folder that exists (relative, no URL); results.csv, summary.md and bench.json at least.
+std::vector<std::string> report_link_problems(const std::string& dir) {
+  const std::string html = read_file(dir + "/report.html");
+  if (html.empty()) return {dir + "/report.html is missing or empty"};
+  std::vector<std::string> problems;
+  for (const char* scheme : {"http://", "https://"})
+    if (html.find(scheme) != std::string::npos) problems.push_back(std::string("URL ") + scheme);
+  const std::regex link(R"re((?:href|src)="([^"]*)")re");
+  std::set<std::string> targets;
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), link);
+       it != std::sregex_iterator(); ++it) {
+    const std::string target = (*it)[1];
+    targets.insert(target);
+    if (target.empty() || target[0] == '/' || target.find(':') != std::string::npos ||
+        target.find("..") != std::string::npos)
+      problems.push_back("not a file in the folder: " + target);
+    else if (!fs::is_regular_file(fs::path(dir) / target))
+      problems.push_back("links a missing file: " + target);
+  }
+  for (const char* file : {"results.csv", "summary.md", "bench.json"})
+    if (!targets.count(file)) problems.push_back(std::string("does not link ") + file);
+  return problems;
 }
 
 BenchParams two_object_params() {
@@ -247,6 +281,94 @@ TEST(BenchSummary, CountsSuccessAndHoldRatePerGroup) {
   EXPECT_NE(md.find("boom"), std::string::npos) << md;
 }
 
+TEST(FirstFcCdfSvg, StepsUpOncePerGraspAndStopsAtTheShareFound) {
+  EXPECT_EQ(first_fc_cdf_svg({}, 0), "");
+  FirstFcPlotParams size;
+  size.width_px = 300;
+  size.height_px = 200;
+  const std::string svg = first_fc_cdf_svg({3.0, 1.0}, 4, size);
+  const std::smatch m = [&svg] {
+    std::smatch found;
+    std::regex_search(svg, found, std::regex(R"re(class="cdf"[^>]*points="([^"]*)")re"));
+    return found;
+  }();
+  ASSERT_EQ(m.size(), 2u) << svg;
+  std::vector<std::pair<double, double>> points;
+  std::istringstream text(m[1].str());
+  for (std::string p; text >> p;)
+    points.emplace_back(std::stod(p.substr(0, p.find(','))), std::stod(p.substr(p.find(',') + 1)));
+  ASSERT_EQ(points.size(), 2u + 2u * 2u);  // start, two steps of two points, end
+  // x grows, y (screen) never goes down the page: a cumulative share.
+  for (size_t i = 1; i < points.size(); ++i) {
+    EXPECT_GE(points[i].first, points[i - 1].first);
+    EXPECT_LE(points[i].second, points[i - 1].second);
+  }
+  // Two of four found: the curve ends halfway between the 0 % and the 100 % lines, on the
+  // dashed line of the share found.
+  const double y0 = points.front().second, y_end = points.back().second;
+  const double y100 = y0 - 2.0 * (y0 - y_end);
+  EXPECT_NEAR(points[2].second, y0 - 0.25 * (y0 - y100), 0.1);  // after the first grasp: 25 %
+  std::smatch found;
+  ASSERT_TRUE(std::regex_search(svg, found, std::regex(R"re(class="found"[^>]*y1="([^"]*)")re")));
+  EXPECT_NEAR(std::stod(found[1].str()), y_end, 0.1);
+  EXPECT_LT(y100, y0);
+}
+
+TEST(BenchReportHtml, ShowsTheSummaryCellsEveryObjectAndOnlyFilesThatExist) {
+  const std::string dir = temp_dir("report");
+  std::vector<BenchRow> rows;
+  const std::vector<std::string> objects = {"box", "cup <&> \"tall\""};
+  for (const std::string& object : objects)
+    for (const std::string planner : {"cord", "generic"})
+      for (int repeat = 0; repeat < 2; ++repeat) {
+        BenchRow r;
+        r.attempt = static_cast<int>(rows.size());
+        r.object = object;
+        r.object_path = object + ".obj";
+        r.hand = "h";
+        r.planner = planner;
+        r.repeat = repeat;
+        r.status = repeat == 0 ? "ok" : "no_grasp";
+        if (repeat == 0) r.first_fc_s = 0.5 + r.attempt;
+        rows.push_back(r);
+      }
+  rows.back().status = "error";
+  rows.back().error = "mesh <broken>";
+  fs::create_directories(dir + "/sheets");
+  std::ofstream(dir + "/sheets/box.png") << "png";
+  BenchSummaryInfo info;
+  info.attempts_total = static_cast<int>(rows.size());
+  info.command = "cordgrasp bench --objects <many>";
+  info.sheets = {"sheets/box.png"};
+  write_bench_outputs(dir, rows, {{"format", "cordgrasp-bench"}}, info);
+  const std::string html = read_file(dir + "/report.html");
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(html.find("</html>"), std::string::npos);
+  EXPECT_NE(html.find("<td>box</td>"), std::string::npos);
+  EXPECT_NE(html.find("<td>cup &lt;&amp;&gt; &quot;tall&quot;</td>"), std::string::npos) << html;
+  EXPECT_EQ(html.find("<many>"), std::string::npos);          // escaped
+  EXPECT_NE(html.find("mesh &lt;broken&gt;"), std::string::npos);  // the error row
+  EXPECT_NE(html.find("<img class=\"sheet\" src=\"sheets/box.png\""), std::string::npos);
+  // The same cells as summary.md, from the same tables.
+  const BenchSummaryTables tables = bench_summary_tables(rows);
+  ASSERT_EQ(tables.per_object.rows.size(), 4u);
+  ASSERT_EQ(tables.totals.rows.size(), 2u);
+  for (const auto& row : tables.totals.rows) {
+    std::string html_row = "<tr><td>" + row[0] + "</td><td>" + row[1] + "</td>";
+    for (size_t i = 2; i < row.size(); ++i) html_row += "<td class=\"num\">" + row[i] + "</td>";
+    EXPECT_NE(html.find(html_row + "</tr>"), std::string::npos) << html_row;
+  }
+  // One plot per hand and planner; the self-test of every report.html.
+  EXPECT_EQ(count(html, "<svg class=\"first-fc\""), 2);
+  EXPECT_NE(html.find("window.cordgraspSelftest"), std::string::npos);
+  EXPECT_EQ(report_link_problems(dir), std::vector<std::string>{});
+  // A sheet that is not there is a link the check catches.
+  fs::remove(dir + "/sheets/box.png");
+  EXPECT_EQ(report_link_problems(dir),
+            std::vector<std::string>(2, "links a missing file: sheets/box.png"));
+  fs::remove_all(dir);
+}
+
 // The CLI runs below use the shipped box and sphere with the default hand, no physics, and a
 // time limit far above what these objects need, so no attempt depends on the machine's load.
 const std::string kBenchArgs = " --hands cordgrasp_sah --planners cord,generic --repeats 2 "
@@ -290,6 +412,13 @@ TEST(CliBench, OneAndTwoJobsGiveTheSameRowsAndShardsMergeToThem) {
                           quoted(merged));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(rows_without_timings(read_rows(merged)), rows_without_timings(rows1));
+  EXPECT_EQ(report_link_problems(merged), std::vector<std::string>{});
+  // Both say which shard commands were merged (summary.md as before: a sub-item per shard).
+  EXPECT_EQ(count(read_file(merged + "/report.html"), "<li>merged from: <code>"), 2);
+  EXPECT_EQ(count(read_file(merged + "/summary.md"), "\n  - merged from: `"), 2);
+  for (const std::string object : {"box", "sphere"})
+    EXPECT_NE(read_file(merged + "/report.html").find("<td>" + object + "</td>"),
+              std::string::npos) << object;
   const std::string summary = read_file(merged + "/summary.md");
   EXPECT_NE(summary.find("| box | cordgrasp_sah | cord | 2 | 2 (100 %)"), std::string::npos)
       << summary;
@@ -331,6 +460,12 @@ TEST(CliBench, BadMeshIsAnErrorRowAndTheBenchExitsZero) {
   EXPECT_NE(read_file(out + "/summary.md").find("## Errors"), std::string::npos);
   EXPECT_GT(fs::file_size(out + "/sheets/box.png"), 0u);
   EXPECT_FALSE(fs::exists(out + "/sheets/broken.png"));
+  // report.html: every object, the contact sheet as an image, only files that exist.
+  const std::string html = read_file(out + "/report.html");
+  EXPECT_NE(html.find("<td>broken</td>"), std::string::npos);
+  EXPECT_NE(html.find("<td>box</td>"), std::string::npos);
+  EXPECT_NE(html.find("src=\"sheets/box.png\""), std::string::npos);
+  EXPECT_EQ(report_link_problems(out), std::vector<std::string>{});
   // A second bench into the same folder is refused without --overwrite; nothing is replaced.
   const std::string before = read_file(out + "/results.csv");
   r = test::run_cordgrasp("bench" + args + " --tests none --no-sheets");

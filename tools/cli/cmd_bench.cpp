@@ -1,6 +1,6 @@
 // `cordgrasp bench`: plan (and validate) every object × hand × planner × repeat, in parallel
-// threads or as one shard of many, into results.csv, summary.md, bench.json and contact
-// sheets. See docs/bench.md.
+// threads or as one shard of many, into results.csv, summary.md, report.html, bench.json and
+// contact sheets. See docs/bench.md.
 #include <unistd.h>
 
 #include <chrono>
@@ -71,7 +71,7 @@ void add_bench_command(CLI::App& app) {
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand(
       "bench", "Benchmark planners over objects × hands × repeats: results.csv, summary.md, "
-               "contact sheets (docs/bench.md)");
+               "report.html, contact sheets (docs/bench.md)");
   cmd->add_option("--hands", opt->bench.hands, "Hands (names or files), comma separated")->required();
   add_package_path_option(cmd, opt->bench.hand_load);
   cmd->add_option("--objects", opt->bench.objects,
@@ -108,7 +108,7 @@ void add_bench_command(CLI::App& app) {
   cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
   cmd->add_option("--out-dir", opt->bench.out_dir, "Output directory (created)")->required();
   cmd->add_flag("--overwrite", opt->bench.overwrite,
-                "Replace another bench's results.csv, bench.json and summary.md in --out-dir");
+                "Replace the results.csv, bench.json, summary.md and report.html in --out-dir");
   cmd->callback([opt]() {
     BenchRunCallbacks cb;
     auto bar = std::make_shared<ProgressBar>(!opt->quiet);

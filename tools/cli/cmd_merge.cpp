@@ -1,5 +1,5 @@
 // `cordgrasp merge`: joins the outputs of `cordgrasp bench --shard k/N` runs into one
-// results.csv (attempt order) and summary.md. See docs/bench.md.
+// results.csv (attempt order), summary.md and report.html. See docs/bench.md.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -84,7 +84,7 @@ void run_merge(const MergeOptions& opt) {
   info.command = process_command_line();
   for (const auto& s : sources)
     if (!s["command"].get<std::string>().empty())
-      info.command += "`\n  - merged from: `" + s["command"].get<std::string>();
+      info.merged_from.push_back(s["command"].get<std::string>());
   info.machine = machine_description() + " (merge; shards may have run elsewhere: see bench.json)";
   info.attempts_total = attempts_total;
   info.tests = tests;
@@ -111,7 +111,8 @@ void run_merge(const MergeOptions& opt) {
 void add_merge_command(CLI::App& app) {
   auto opt = std::make_shared<MergeOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "merge", "Join `cordgrasp bench --shard k/N` outputs into one results.csv and summary.md");
+      "merge", "Join `cordgrasp bench --shard k/N` outputs into one results.csv, summary.md and "
+               "report.html");
   cmd->add_option("dirs", opt->dirs, "Bench output directories (one per shard)")->required();
   cmd->add_flag("--allow-missing", opt->allow_missing,
                 "Merge even when some attempts are in no directory (a shard missing)");

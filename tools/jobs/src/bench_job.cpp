@@ -18,6 +18,7 @@
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/parallel_for.h"
+#include "cordgrasp/jobs/bench_report_html.h"
 #include "cordgrasp/jobs/physics_settings.h"
 #include "cordgrasp/jobs/sim_json.h"
 #include "cordgrasp/jobs/text_format.h"
@@ -152,8 +153,8 @@ Stats stats_of(std::vector<double> v) {
 }
 
 
-// "| 10/10 | 100 % | ..." cells of one group of rows.
-std::string summary_cells(const std::vector<const BenchRow*>& rows) {
+// The summary cells of one group of rows (summary_columns()).
+std::vector<std::string> summary_cells(const std::vector<const BenchRow*>& rows) {
   int ok = 0, no_grasp = 0, error = 0, simulated = 0, held = 0;
   std::vector<double> first_fc, total, alpha, alpha_approach, epsilon, processed;
   for (const BenchRow* r : rows) {
@@ -177,27 +178,46 @@ std::string summary_cells(const std::vector<const BenchRow*>& rows) {
   const Stats t = stats_of(first_fc), a = stats_of(alpha), e = stats_of(epsilon),
               tt = stats_of(total), aa = stats_of(alpha_approach);
   auto or_dash = [](bool have, const std::string& s) { return have ? s : std::string("–"); };
-  std::ostringstream out;
-  out << "| " << n << " | " << ok << " (" << fixed(n ? 100.0 * ok / n : 0.0, 0) << " %) | "
-      << no_grasp << " | " << error << " | " << or_dash(t.n > 0, fixed(t.median, 3)) << " | "
-      << or_dash(t.n > 0, fixed(t.mean, 3)) << " | " << or_dash(t.n > 0, fixed(t.sd, 3)) << " | "
-      << or_dash(tt.n > 0, fixed(tt.mean, 3)) << " | " << or_dash(a.n > 0, fixed(a.mean, 3))
-      << " | " << or_dash(a.n > 0, fixed(a.sd, 3)) << " | "
-      << or_dash(aa.n > 0, fixed(aa.mean, 3)) << " | " << or_dash(aa.n > 0, fixed(aa.sd, 3))
-      << " | "
-      << or_dash(e.n > 0, format_number(e.mean, "%.3g")) << " | "
-      << or_dash(simulated > 0, std::to_string(held) + "/" + std::to_string(simulated) + " (" +
-                                    fixed(simulated ? 100.0 * held / simulated : 0.0, 0) +
-                                    " %)")
-      << " |";
-  return out.str();
+  return {std::to_string(n),
+          std::to_string(ok) + " (" + fixed(n ? 100.0 * ok / n : 0.0, 0) + " %)",
+          std::to_string(no_grasp),
+          std::to_string(error),
+          or_dash(t.n > 0, fixed(t.median, 3)),
+          or_dash(t.n > 0, fixed(t.mean, 3)),
+          or_dash(t.n > 0, fixed(t.sd, 3)),
+          or_dash(tt.n > 0, fixed(tt.mean, 3)),
+          or_dash(a.n > 0, fixed(a.mean, 3)),
+          or_dash(a.n > 0, fixed(a.sd, 3)),
+          or_dash(aa.n > 0, fixed(aa.mean, 3)),
+          or_dash(aa.n > 0, fixed(aa.sd, 3)),
+          or_dash(e.n > 0, format_number(e.mean, "%.3g")),
+          or_dash(simulated > 0, std::to_string(held) + "/" + std::to_string(simulated) + " (" +
+                                     fixed(simulated ? 100.0 * held / simulated : 0.0, 0) +
+                                     " %)")};
 }
 
-const char* kSummaryHeader =
-    "| attempts | FC grasp found | no grasp | error | first FC median [s] | first FC mean [s] "
-    "| first FC sd [s] | total mean [s] | α mean [rad] | α sd [rad] | α approach mean [rad] "
-    "| α approach sd [rad] | ε mean | sim held |\n";
-const char* kSummaryRule = "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|";
+// Column names of summary_cells(), in order.
+const std::vector<std::string>& summary_columns() {
+  static const std::vector<std::string> kColumns = {
+      "attempts", "FC grasp found", "no grasp", "error", "first FC median [s]",
+      "first FC mean [s]", "first FC sd [s]", "total mean [s]", "α mean [rad]", "α sd [rad]",
+      "α approach mean [rad]", "α approach sd [rad]", "ε mean", "sim held"};
+  return kColumns;
+}
+
+// One Markdown table: header, rule, rows.
+void markdown_table(const BenchSummaryTable& table, std::ostream& out) {
+  auto line = [&out](const std::vector<std::string>& cells) {
+    out << "|";
+    for (const std::string& c : cells) out << " " << c << " |";
+    out << "\n";
+  };
+  line(table.columns);
+  out << "|";
+  for (size_t i = 0; i < table.columns.size(); ++i) out << "---|";
+  out << "\n";
+  for (const auto& row : table.rows) line(row);
+}
 
 std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -651,11 +671,49 @@ std::vector<BenchRow> merge_bench_rows(const std::vector<std::vector<BenchRow>>&
   return rows;
 }
 
+BenchSummaryTables bench_summary_tables(const std::vector<BenchRow>& rows) {
+  // Groups in attempt order.
+  std::vector<std::string> keys, totals_keys;
+  std::map<std::string, std::vector<const BenchRow*>> groups, totals;
+  std::map<std::string, std::vector<std::string>> key_cells;
+  for (const BenchRow& r : rows) {
+    const std::string key = r.object_path + '\n' + r.hand + '\n' + r.planner;
+    if (!groups.count(key)) {
+      keys.push_back(key);
+      key_cells[key] = {r.object, r.hand, r.planner};
+    }
+    groups[key].push_back(&r);
+    const std::string tkey = r.hand + '\n' + r.planner;
+    if (!totals.count(tkey)) {
+      totals_keys.push_back(tkey);
+      key_cells[tkey] = {r.hand, r.planner};
+    }
+    totals[tkey].push_back(&r);
+  }
+  BenchSummaryTables t;
+  t.per_object.columns = {"object", "hand", "planner"};
+  t.totals.columns = {"hand", "planner"};
+  for (BenchSummaryTable* table : {&t.per_object, &t.totals})
+    table->columns.insert(table->columns.end(), summary_columns().begin(),
+                          summary_columns().end());
+  auto add = [&key_cells](BenchSummaryTable* table, const std::string& key,
+                          const std::vector<const BenchRow*>& group) {
+    std::vector<std::string> cells = key_cells[key];
+    const std::vector<std::string> values = summary_cells(group);
+    cells.insert(cells.end(), values.begin(), values.end());
+    table->rows.push_back(std::move(cells));
+  };
+  for (const std::string& k : keys) add(&t.per_object, k, groups[k]);
+  for (const std::string& k : totals_keys) add(&t.totals, k, totals[k]);
+  return t;
+}
+
 std::string bench_summary_markdown(const std::vector<BenchRow>& rows,
                                    const BenchSummaryInfo& info) {
   std::ostringstream out;
   out << "# cordgrasp bench summary\n\n";
   out << "- command: `" << info.command << "`\n";
+  for (const std::string& c : info.merged_from) out << "  - merged from: `" << c << "`\n";
   out << "- machine: " << info.machine << "\n";
   out << "- attempts: " << rows.size() << " of " << info.attempts_total;
   if (!info.shard.empty()) out << " (shard " << info.shard << ")";
@@ -675,39 +733,11 @@ std::string bench_summary_markdown(const std::vector<BenchRow>& rows,
          "first force-closure grasp; first FC, α and ε over the attempts that found a grasp; sim held = first "
          "grasps that held through every test / first grasps simulated.\n\n";
 
-  // Groups in attempt order.
-  std::vector<std::string> keys;
-  std::map<std::string, std::vector<const BenchRow*>> groups;
-  std::vector<std::string> totals_keys;
-  std::map<std::string, std::vector<const BenchRow*>> totals;
-  std::map<std::string, std::vector<std::string>> key_cells;
-  for (const BenchRow& r : rows) {
-    const std::string key = r.object_path + '\n' + r.hand + '\n' + r.planner;
-    if (!groups.count(key)) {
-      keys.push_back(key);
-      key_cells[key] = {r.object, r.hand, r.planner};
-    }
-    groups[key].push_back(&r);
-    const std::string tkey = r.hand + '\n' + r.planner;
-    if (!totals.count(tkey)) {
-      totals_keys.push_back(tkey);
-      key_cells[tkey] = {r.hand, r.planner};
-    }
-    totals[tkey].push_back(&r);
-  }
-  out << "## Per object, hand and planner\n\n| object | hand | planner " << kSummaryHeader
-      << "|---|---|---" << kSummaryRule << "\n";
-  for (const std::string& k : keys) {
-    const auto& c = key_cells[k];
-    out << "| " << c[0] << " | " << c[1] << " | " << c[2] << " " << summary_cells(groups[k])
-        << "\n";
-  }
-  out << "\n## Totals per hand and planner (all objects)\n\n| hand | planner " << kSummaryHeader
-      << "|---|---" << kSummaryRule << "\n";
-  for (const std::string& k : totals_keys) {
-    const auto& c = key_cells[k];
-    out << "| " << c[0] << " | " << c[1] << " " << summary_cells(totals[k]) << "\n";
-  }
+  const BenchSummaryTables tables = bench_summary_tables(rows);
+  out << "## Per object, hand and planner\n\n";
+  markdown_table(tables.per_object, out);
+  out << "\n## Totals per hand and planner (all objects)\n\n";
+  markdown_table(tables.totals, out);
   std::vector<const BenchRow*> errors;
   for (const BenchRow& r : rows)
     if (r.status == "error") errors.push_back(&r);
@@ -733,6 +763,8 @@ void write_bench_outputs(const std::string& out_dir, const std::vector<BenchRow>
   write_file_atomically((fs::path(out_dir) / "bench.json").string(), bench_json.dump(2) + "\n");
   write_file_atomically((fs::path(out_dir) / "summary.md").string(),
                         bench_summary_markdown(rows, info));
+  write_file_atomically((fs::path(out_dir) / "report.html").string(),
+                        bench_report_html(rows, info));
 }
 
 std::string machine_description() {

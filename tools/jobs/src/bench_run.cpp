@@ -133,9 +133,11 @@ BenchRunOutcome run_bench(const BenchRunParams& opt, const BenchRunCallbacks& cb
   const std::vector<BenchAttempt> attempts = shard_attempts(all, shard_k, shard_n);
   std::error_code ec;
   if (!opt.overwrite)
-    for (const char* name : {"results.csv", "bench.json", "summary.md"})
+    for (const std::string name : {"results.csv", "bench.json", "summary.md", "report.html"})
       if (fs::exists(fs::path(opt.out_dir) / name, ec))
-        throw InputError("bench: --out-dir '" + opt.out_dir + "' holds another bench's " + name +
+        throw InputError("bench: --out-dir '" + opt.out_dir + "' holds " +
+                         (name == "report.html" ? "a report.html (of a bench or a run)"
+                                                : "another bench's " + name) +
                          "; give another folder, or --overwrite to replace it");
   fs::create_directories(opt.out_dir, ec);
   if (ec) throw InputError("bench: cannot create '" + opt.out_dir + "': " + ec.message());

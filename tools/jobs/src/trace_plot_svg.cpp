@@ -6,6 +6,7 @@
 
 #include "cordgrasp/jobs/text_format.h"
 #include "html_text.h"
+#include "svg_axis.h"
 
 namespace cordgrasp {
 namespace {
@@ -17,26 +18,6 @@ constexpr const char* kTurnColor = "#d95f02";
 
 /// The phase a sample belongs to: "shake x" (a segment's end) belongs to "shake".
 std::string phase_of(const TraceSample& s) { return s.phase.substr(0, s.phase.find(' ')); }
-
-/// A round tick step (1, 2 or 5 × 10^k) giving two to five intervals up to `max` (> 0).
-double tick_step(double max) {
-  const double raw = max / 5.0;
-  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
-  for (const double m : {1.0, 2.0, 5.0})
-    if (m * decade >= raw) return m * decade;
-  return 10.0 * decade;
-}
-
-/// One vertical axis: values from 0 to `top`, ticks every `step`.
-struct Axis {
-  double step = 1.0;
-  double top = 1.0;
-  explicit Axis(double max) {
-    if (!(max > 0.0) || !std::isfinite(max)) max = 1.0;
-    step = tick_step(max);
-    top = step * std::ceil(max / step - 1e-9);
-  }
-};
 
 /// A run of samples of one phase: indices [begin, end) and the time span it shades.
 struct PhaseSpan {

@@ -175,6 +175,7 @@ std::vector<BenchRow> merge_bench_rows(const std::vector<std::vector<BenchRow>>&
 /// What summary.md says besides the rows.
 struct BenchSummaryInfo {
   std::string command;     ///< the command line
+  std::vector<std::string> merged_from;  ///< merge: the command lines of the shards merged
   std::string machine;     ///< e.g. "2 cores (nproc), Intel(R) Xeon(R) ..."
   int attempts_total = 0;  ///< attempts of the whole bench (all shards)
   std::string shard;       ///< "k/N", or "" for a whole bench
@@ -184,13 +185,32 @@ struct BenchSummaryInfo {
   int attempts_asked = 0;   ///< attempts this run (its shard) was to make, when interrupted
 };
 
+/// A table of summary.md and report.html: column names and rows of cells (text, units in the
+/// column names).
+struct BenchSummaryTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> rows;
+};
+
+/// The summary's tables, groups in attempt order: per object × hand × planner, and per hand ×
+/// planner over all objects (attempts, grasps found, no grasp, errors, time to the first
+/// force-closure grasp, total time, α, ε, sim hold rate).
+struct BenchSummaryTables {
+  BenchSummaryTable per_object;
+  BenchSummaryTable totals;
+};
+
+/// The summary's tables of `rows` (summary.md and report.html show the same cells).
+BenchSummaryTables bench_summary_tables(const std::vector<BenchRow>& rows);
+
 /// summary.md: per object × hand × planner, then per hand × planner over all objects, then
 /// errors.
 std::string bench_summary_markdown(const std::vector<BenchRow>& rows,
                                    const BenchSummaryInfo& info);
 
-/// Writes results.csv, summary.md and bench.json (`bench_json`) into `out_dir` (created if
-/// missing), each atomically. @throws InputError when a file cannot be written.
+/// Writes results.csv, summary.md, bench.json (`bench_json`) and report.html
+/// (bench_report_html) into `out_dir` (created if missing), each atomically.
+/// @throws InputError when a file cannot be written.
 void write_bench_outputs(const std::string& out_dir, const std::vector<BenchRow>& rows,
                          const nlohmann::json& bench_json, const BenchSummaryInfo& info);
 

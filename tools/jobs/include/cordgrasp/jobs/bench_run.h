@@ -1,6 +1,6 @@
 #pragma once
 // `cordgrasp bench` as a job: every object × hand × planner × repeat (threads, shards), then
-// results.csv, summary.md, bench.json and contact sheets.
+// results.csv, summary.md, report.html, bench.json and contact sheets.
 #include <functional>
 #include <string>
 #include <vector>
@@ -27,7 +27,7 @@ struct BenchRunParams {
   bool no_sheets = false;               ///< no contact sheet PNGs
   std::string sheet_size = "480x360";   ///< contact sheet tile size WxH [px]
   std::string out_dir;                  ///< output folder (created)
-  bool overwrite = false;  ///< replace another bench's results in out_dir (else refused)
+  bool overwrite = false;  ///< replace the results and report.html in out_dir (else refused)
   /// Stop request: no attempt starts once it is set, those in flight are abandoned; the rows
   /// finished are written with bench.json "complete": false (no contact sheets).
   CancelToken cancel;
