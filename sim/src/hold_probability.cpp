@@ -4,9 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <stdexcept>
 
 #include "cordgrasp/core/enum_names.h"
+#include "cordgrasp/core/parallel_for.h"
 
 namespace cordgrasp {
 namespace {
@@ -16,6 +18,13 @@ constexpr EnumName<HoldVerdict> kVerdictNames[] = {
     {HoldVerdict::kAbove, "above"},
     {HoldVerdict::kBelow, "below"},
 };
+
+/// CPU time of the calling thread [s].
+double thread_cpu_s() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 /// The spread or σ behind each factor (0: the factor does not vary).
 double factor_spread(UncertaintyFactor f, const UncertaintyParams& u) {
@@ -104,17 +113,14 @@ HoldProbability estimate_hold_probability(const Mesh& mesh, const HandModel& han
                                           const SimTests& tests,
                                           const UncertaintyParams& uncertainty,
                                           const HoldProbabilityParams& params,
-                                          const CancelToken& cancel) {
+                                          const CancelToken& cancel, int jobs) {
   check_uncertainty_params(uncertainty);
   check_hold_probability_params(params);
   const auto start = std::chrono::steady_clock::now();
   HoldProbability out;
   out.threshold = params.min_hold_probability;
-  for (int t = 0; !stop_drawing(out.held, static_cast<int>(out.draws.size()), params); ++t) {
-    if (cancel.cancelled()) {
-      out.complete = false;
-      break;
-    }
+  const auto simulate = [&](int t) {
+    const double cpu_start = thread_cpu_s();
     UncertainDrawResult d;
     d.trial = t;
     d.draw = draw_uncertainty(uncertainty, params.seed, grasp_index, t);
@@ -124,8 +130,27 @@ HoldProbability estimate_hold_probability(const Mesh& mesh, const HandModel& han
     if (const PhaseResult* failed = r.held() ? nullptr : r.failed_phase())
       d.failed_phase = failed->name;
     d.wall_time_s = r.wall_time_s;
-    out.held += r.held();
-    out.draws.push_back(std::move(d));
+    d.cpu_s = thread_cpu_s() - cpu_start;
+    return d;
+  };
+  const auto drawn = [&] { return static_cast<int>(out.draws.size()); };
+  while (!stop_drawing(out.held, drawn(), params)) {
+    if (cancel.cancelled()) {
+      out.complete = false;
+      break;
+    }
+    // `jobs` draws at once; the test reads them in order and stops where one at a time would.
+    const int from = drawn();
+    const int batch = std::min(std::max(1, jobs), params.max_draws - from);
+    std::vector<UncertainDrawResult> more(static_cast<size_t>(batch));
+    parallel_for(batch, jobs, [&](int i) { more[static_cast<size_t>(i)] = simulate(from + i); });
+    out.simulations += batch;
+    for (const UncertainDrawResult& d : more) out.cpu_s += d.cpu_s;
+    for (UncertainDrawResult& d : more) {
+      if (stop_drawing(out.held, drawn(), params)) break;
+      out.held += d.outcome == Outcome::kHeld;
+      out.draws.push_back(std::move(d));
+    }
   }
   out.interval = wilson_interval(out.held, static_cast<int>(out.draws.size()));
   out.verdict = hold_verdict(out.interval, out.threshold);

@@ -57,8 +57,15 @@ std::string run_report_markdown(const RunReport& rep) {
     md << "- Physics: skipped (`--tests none`)\n";
   if (plan.validation) {
     const ValidationParams& v = plan.validation->params;
-    md << "- Validated planning: accepted when held in ≥ " << v.min_held << " of " << v.trials
-       << " trials" << (v.require_held_as_planned ? ", the first as planned" : "") << " ("
+    if (is_none(v.uncertainty))
+      md << "- Validated planning: accepted when held in ≥ " << v.min_held << " of "
+         << v.trials << " trials" << (v.require_held_as_planned ? ", the first as planned" : "");
+    else
+      md << "- Validated planning: accepted when held as planned and P(held) under uncertainty "
+            "lies above "
+         << num(v.min_hold_probability, "%.2f") << " (Wilson 95 %, at most " << v.max_draws
+         << " draws), ranked by P(held)";
+    md << " ("
        << v.tests << ", " << to_string(v.protocol) << " protocol), squeeze shift "
        << "limit " << num(1e3 * v.squeeze_shift_limit_m, "%.0f") << " mm, budget "
        << num(v.budget_s) << " s\n";

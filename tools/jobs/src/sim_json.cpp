@@ -46,7 +46,8 @@ nlohmann::json hold_probability_to_json(const HoldProbability& h) {
                      {"com_offset_O_m", to_json(d.draw.com_offset_O_m)},
                      {"squeeze_factor", d.draw.squeeze_factor},
                      {"scores", scores},
-                     {"wall_time_s", d.wall_time_s}});
+                     {"wall_time_s", d.wall_time_s},
+                     {"cpu_s", d.cpu_s}});
   }
   nlohmann::json factors = nlohmann::json::array();
   for (const FactorSensitivity& f : h.sensitivity.factors)
@@ -68,6 +69,8 @@ nlohmann::json hold_probability_to_json(const HoldProbability& h) {
                                     ? nlohmann::json(to_string(*h.sensitivity.most_associated))
                                     : nlohmann::json(nullptr)}}},
           {"wall_time_s", h.wall_time_s},
+          {"cpu_s", h.cpu_s},
+          {"simulations", h.simulations},
           {"draw_results", draws}};
 }
 

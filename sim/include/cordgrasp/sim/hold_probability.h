@@ -62,6 +62,7 @@ struct UncertainDrawResult {
   Outcome outcome = Outcome::kNotRun;
   std::string failed_phase;  ///< first phase not held ("" when held)
   double wall_time_s = 0.0;
+  double cpu_s = 0.0;  ///< CPU time of its simulation (the thread that ran it) [s]
 };
 
 /// For one factor: its mean standardized draw in failed and in held trials, and their
@@ -93,21 +94,24 @@ struct HoldProbability {
   double threshold = 0.8;
   HoldVerdict verdict = HoldVerdict::kUndecided;
   FailureSensitivity sensitivity;
+  double cpu_s = 0.0;  ///< CPU time of every draw simulated, discarded ones included [s]
   bool complete = true;  ///< false when `cancel` stopped it before the test did
+  int simulations = 0;   ///< draws simulated (a batch may run past the stop: jobs > 1)
   double wall_time_s = 0.0;
 };
 
 /// Simulates `grasp` (index `grasp_index` in its plan) under draws 0, 1, ... of `uncertainty`
 /// (apply_uncertainty on `sim`, then validate_grasp with `tests`) until stop_drawing says so.
-/// Deterministic: the draws depend on (params.seed, grasp_index, draw) alone. `cancel` is
-/// checked before each draw.
+/// Deterministic: the draws depend on (params.seed, grasp_index, draw) alone; `jobs` draws
+/// are simulated at once and those past the stop discarded, so the result does not depend on
+/// it. `cancel` is checked before each batch.
 /// @throws std::invalid_argument for bad params (check_*).
 HoldProbability estimate_hold_probability(const Mesh& mesh, const HandModel& hand,
                                           const Grasp& grasp, int grasp_index, const SimParams& sim,
                                           const SimTests& tests,
                                           const UncertaintyParams& uncertainty,
                                           const HoldProbabilityParams& params,
-                                          const CancelToken& cancel = {});
+                                          const CancelToken& cancel = {}, int jobs = 1);
 
 /// "0.85 [0.64, 0.95]": P(held) and its Wilson 95 % interval.
 std::string hold_probability_text(const HoldProbability& h);

@@ -16,9 +16,10 @@
 //               95 %), draws, held, threshold, decided, verdict (above, below, undecided),
 //               sensitivity: {factors: [{factor, mean_score_failed, mean_score_held,
 //               effect}], most_associated (null unless some draws held and some failed)},
-//               wall_time_s, draw_results: [{trial, outcome, failed_phase, hand_offset_G_m,
-//               hand_turn_G_rad, mu_factor, mass_factor, com_offset_O_m, squeeze_factor,
-//               scores: {factor: standardized draw}, wall_time_s}]}),
+//               wall_time_s, cpu_s, simulations (draws simulated), draw_results: [{trial,
+//               outcome, failed_phase, hand_offset_G_m, hand_turn_G_rad, mu_factor,
+//               mass_factor, com_offset_O_m, squeeze_factor, scores: {factor: standardized
+//               draw}, wall_time_s, cpu_s}]}),
 //             phases: [{name, outcome, detail, translation_m, rotation_rad, max_translation_m,
 //                       in_contact, contact_count, max_contact_count, max_penetration_m,
 //                       joint_efforts: {joint: N·m or N}, sim_time_s, wall_time_s, steps}]}]
