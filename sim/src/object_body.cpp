@@ -166,7 +166,9 @@ std::unique_ptr<ObjectBody> make_object_body(const Mesh& mesh, const SimParams& 
   if (!(solid.volume_m3 > 0.0))
     throw std::invalid_argument("make_object_body: mesh '" + mesh.name +
                                 "': collision shape bounds no volume");
-  const Eigen::Vector3d com = basis.center_of_mass_m;
+  const Eigen::Vector3d com =
+      basis.center_of_mass_m +
+      Eigen::Vector3d(params.com_offset_x_m, params.com_offset_y_m, params.com_offset_z_m);
   Eigen::Matrix3d I = info.mass_kg / solid.volume_m3 * solid.inertia +
                       shift_inertia(info.mass_kg, com - solid.com);
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (I + I.transpose()));

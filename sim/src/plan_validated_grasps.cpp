@@ -18,6 +18,7 @@
 #include "cordgrasp/core/parallel_for.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/plan_generic_grasps.h"
+#include "cordgrasp/sim/hold_probability.h"
 #include "cordgrasp/sim/sim_result.h"
 #include "cordgrasp/sim/validate_grasp.h"
 
@@ -151,6 +152,16 @@ ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, Pla
     throw std::invalid_argument("plan_validated_grasps: min_held must be in [1, trials = " +
                                 std::to_string(v.trials) + "], got " +
                                 std::to_string(v.min_held));
+  const bool uncertain = !is_none(v.uncertainty);
+  HoldProbabilityParams hold_test;
+  hold_test.min_hold_probability = v.min_hold_probability;
+  hold_test.max_draws = v.max_draws;
+  hold_test.min_draws = std::min(hold_test.min_draws, v.max_draws);
+  hold_test.seed = v.trial_seed;
+  if (uncertain) {
+    check_uncertainty_params(v.uncertainty);
+    check_hold_probability_params(hold_test);
+  }
   if (planner == PlannerKind::kCord && !cord)
     throw std::invalid_argument("plan_validated_grasps: the cord planner needs CordParams");
   const auto start = Clock::now();
@@ -218,46 +229,67 @@ ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, Pla
           to_string(first.outcome) + (failed ? " in " + failed->name : std::string()) + ")");
       continue;
     }
-    // Nudged trials, `jobs` at a time, until the verdict is decided; the record keeps the
-    // trials a one-at-a-time run would have made, so it does not depend on `jobs`.
     vs.held_as_planned += first.held() ? 1 : 0;
-    std::vector<Outcome> outcomes{first.outcome};
-    const auto decided = [&](const std::vector<Outcome>& o) {
-      const int held = count_held(o);
-      return held >= v.min_held || held + (v.trials - static_cast<int>(o.size())) < v.min_held;
-    };
-    while (!decided(outcomes) && !cancel.cancelled()) {
-      const int from = static_cast<int>(outcomes.size());
-      const int batch = std::min(std::max(1, jobs), v.trials - from);
-      std::vector<Outcome> more(static_cast<size_t>(batch), Outcome::kNotRun);
-      parallel_for(batch, jobs, [&](int i) {
-        const int t = from + i;
-        const Grasp nudged = perturbed_grasp(
-            *g, v.perturbation, v.trial_seed + 1000 * static_cast<std::uint64_t>(candidate) + t);
-        more[static_cast<size_t>(i)] = validate_grasp(mesh, hand, nudged, sim, tests).outcome;
-      });
-      vs.trials_run += batch;
-      for (Outcome o : more) {
-        if (decided(outcomes)) break;
-        outcomes.push_back(o);
-      }
-    }
-    vs.physics_s += seconds_since(physics_start);
-    if (!decided(outcomes)) {  // cancelled between trial batches: abandon the candidate
-      interrupted = true;
-      break;
-    }
-    const int held = count_held(outcomes);
-    const bool accepted = held >= v.min_held;
-    say("candidate " + std::to_string(candidate) + ": held in " + std::to_string(held) + " / " +
-        std::to_string(outcomes.size()) + " trials" +
-        (accepted ? ", accepted (" + std::to_string(accepted_grasps.size() + 1) + " / " +
-                        std::to_string(wanted) + ")"
-                  : std::string()));
-    if (!accepted) continue;
     GraspValidation gv;
-    gv.held_trials = held;
-    gv.trials = static_cast<int>(outcomes.size());
+    if (uncertain) {
+      // P(held) under uncertainty: draws until the Wilson interval is decided (`jobs` at a
+      // time; the test stops where one at a time would).
+      const HoldProbability h = estimate_hold_probability(mesh, hand, *g, candidate, sim, tests,
+                                                          v.uncertainty, hold_test, cancel, jobs);
+      vs.trials_run += h.simulations;
+      vs.physics_s += seconds_since(physics_start);
+      if (!h.complete) {  // cancelled between draws: abandon the candidate
+        interrupted = true;
+        break;
+      }
+      const bool accepted = h.verdict == HoldVerdict::kAbove;
+      say("candidate " + std::to_string(candidate) + ": " + hold_probability_line(h) +
+          (accepted ? ", accepted (" + std::to_string(accepted_grasps.size() + 1) + " / " +
+                          std::to_string(wanted) + ")"
+                    : std::string()));
+      if (!accepted) continue;
+      gv.held_trials = h.held;
+      gv.trials = static_cast<int>(h.draws.size());
+    } else {
+      // Nudged trials, `jobs` at a time, until the verdict is decided; the record keeps the
+      // trials a one-at-a-time run would have made, so it does not depend on `jobs`.
+      std::vector<Outcome> outcomes{first.outcome};
+      const auto decided = [&](const std::vector<Outcome>& o) {
+        const int held = count_held(o);
+        return held >= v.min_held || held + (v.trials - static_cast<int>(o.size())) < v.min_held;
+      };
+      while (!decided(outcomes) && !cancel.cancelled()) {
+        const int from = static_cast<int>(outcomes.size());
+        const int batch = std::min(std::max(1, jobs), v.trials - from);
+        std::vector<Outcome> more(static_cast<size_t>(batch), Outcome::kNotRun);
+        parallel_for(batch, jobs, [&](int i) {
+          const int t = from + i;
+          const Grasp nudged = perturbed_grasp(
+              *g, v.perturbation, v.trial_seed + 1000 * static_cast<std::uint64_t>(candidate) + t);
+          more[static_cast<size_t>(i)] = validate_grasp(mesh, hand, nudged, sim, tests).outcome;
+        });
+        vs.trials_run += batch;
+        for (Outcome o : more) {
+          if (decided(outcomes)) break;
+          outcomes.push_back(o);
+        }
+      }
+      vs.physics_s += seconds_since(physics_start);
+      if (!decided(outcomes)) {  // cancelled between trial batches: abandon the candidate
+        interrupted = true;
+        break;
+      }
+      const int held = count_held(outcomes);
+      const bool accepted = held >= v.min_held;
+      say("candidate " + std::to_string(candidate) + ": held in " + std::to_string(held) + " / " +
+          std::to_string(outcomes.size()) + " trials" +
+          (accepted ? ", accepted (" + std::to_string(accepted_grasps.size() + 1) + " / " +
+                          std::to_string(wanted) + ")"
+                    : std::string()));
+      if (!accepted) continue;
+      gv.held_trials = held;
+      gv.trials = static_cast<int>(outcomes.size());
+    }
     gv.settle = phase_outcome(first, "settle");
     gv.close = phase_outcome(first, "close");
     gv.lift = phase_outcome(first, "lift");
@@ -272,6 +304,26 @@ ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, Pla
       vs.first_accepted_s = seconds_since(start);
       vs.first_accepted_cpu_s = cpu_used();
     }
+  }
+  if (uncertain) {
+    // Rank the accepted grasps by P(held) (held / draws), most likely first; ties keep the
+    // planner's order.
+    std::vector<size_t> order(accepted_grasps.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    const auto p_held = [&](size_t i) {
+      const GraspValidation& r = record.grasps[i];
+      return r.trials > 0 ? static_cast<double>(r.held_trials) / r.trials : 0.0;
+    };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return p_held(a) > p_held(b); });
+    std::vector<Grasp> grasps;
+    std::vector<GraspValidation> verdicts;
+    for (const size_t i : order) {
+      grasps.push_back(std::move(accepted_grasps[i]));
+      verdicts.push_back(record.grasps[i]);
+    }
+    accepted_grasps = std::move(grasps);
+    record.grasps = std::move(verdicts);
   }
   vs.attempts = stats.attempts;
   vs.force_closure = stats.force_closure;

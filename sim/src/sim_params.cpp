@@ -37,6 +37,8 @@ constexpr FieldRange kFieldRanges[] = {
     {"cone_edges", 3, 64},               {"soft_finger_radius_m", 0, 0.0499},
     {"contact_stiffness_Npm", 0, 1e9},   {"contact_damping_Nspm", 0, 1e7},
     {"density_kgm3", 1, 1e5},            {"mass_kg", 1e-6, 1e4},
+    {"com_offset_x_m", -1, 1},           {"com_offset_y_m", -1, 1},
+    {"com_offset_z_m", -1, 1},
     {"concavity", 0, 1},                 {"max_hull_vertices", 4, 100000},
     {"max_input_triangles", -1, 1e7},    {"effort_scale", 1e-3, 100},
     {"squeeze_rad", 0, 3.2},             {"reach_start_fraction", 0, 1},

@@ -102,6 +102,33 @@ TEST(CliRun, ValidatesByDefault) {
   EXPECT_NE(read_text(dir.file("report.md")).find("held trials"), std::string::npos);
 }
 
+TEST(CliRun, UncertaintyAcceptsByHoldProbabilityAndReportsItWithItsInterval) {
+  TempDir dir;
+  // At most 6 draws (the settings file), decided above 0.5 by 6 of 6 (Wilson low 0.61).
+  const std::string settings = dir.write("draws.yaml", "validation:\n  max_draws: 6\n");
+  const auto r = run_cordgrasp(
+      "run --hand parallel_gripper --object box --grasps 1 --no-render --quiet --uncertainty "
+      "realistic --min-hold-probability 0.5 --settings " + quoted(settings) + " --out-dir " +
+      quoted(dir.path.string()));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json plan = read_json(dir.file("plan.json"));
+  const nlohmann::json& v = plan.at("validation").at("parameters");
+  EXPECT_EQ(v.at("uncertainty").at("mu_relative_spread"), 0.2);
+  EXPECT_EQ(v.at("min_hold_probability"), 0.5);
+  EXPECT_EQ(v.at("max_draws"), 6);
+  ASSERT_EQ(plan.at("grasps").size(), 1u);
+  EXPECT_LE(plan.at("grasps")[0].at("validation").at("trials").get<int>(), 6);
+  // sim.json estimates P(held) again with the grasp's own draws; the report shows it.
+  const nlohmann::json sim = read_json(dir.file("sim.json"));
+  const nlohmann::json& h = sim.at("grasps")[0].at("hold_probability");
+  EXPECT_LE(h.at("draws").get<int>(), 6);
+  EXPECT_EQ(h.at("threshold"), 0.5);
+  const std::string report = read_text(dir.file("report.md"));
+  EXPECT_NE(report.find("P(held) [95 %]"), std::string::npos) << report;
+  EXPECT_NE(report.find("P(held) under uncertainty lies above 0.50"), std::string::npos)
+      << report;
+}
+
 TEST(CliRun, ProgressGoesToStderrUnlessQuiet) {
   TempDir dir;
   const auto r = run_cordgrasp("run --grasps 1 --tests none --no-render --out-dir " +

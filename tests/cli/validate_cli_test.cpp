@@ -118,12 +118,12 @@ class ValidateCli : public ::testing::Test {
   std::filesystem::path dir_;
 };
 
-/// `j` without its timings (wall-clock keys and the decomposition time).
+/// `j` without its timings (wall-clock and CPU keys and the decomposition time).
 nlohmann::json without_timings(const nlohmann::json& j) {
   if (j.is_object()) {
     nlohmann::json out = nlohmann::json::object();
     for (const auto& [key, value] : j.items())
-      if (key.find("wall") == std::string::npos && key != "decomposition_s")
+      if (key.find("wall") == std::string::npos && key != "cpu_s" && key != "decomposition_s")
         out[key] = without_timings(value);
     return out;
   }
@@ -428,6 +428,56 @@ TEST_F(ValidateCli, TrialsRepeatEachGraspWithTheHandNudgedAndShowAPointContactPi
   // Same seed, same trials.
   run();
   EXPECT_EQ(read_out()["grasps"][0]["trials"], trials);
+}
+
+TEST_F(ValidateCli, UncertaintyGivesEachGraspAHoldProbabilityTheSameForAnyNumberOfThreads) {
+  constexpr int kMaxDraws = 6;  ///< few draws: the box pinch costs ~0.05 s each (lift only)
+  const std::string one = (dir_ / "one.json").string(), two = (dir_ / "two.json").string();
+  const std::string args = "validate --plan " + plan_path() +
+                           " --tests lift --uncertainty realistic --trials " +
+                           std::to_string(kMaxDraws) + " --seed 5 -q";
+  const auto r1 = run_cordgrasp(args + " --jobs 1 --out " + one);
+  ASSERT_EQ(r1.exit_code, 0) << r1.output;
+  const auto r2 = run_cordgrasp(args + " --jobs 2 --out " + two);
+  ASSERT_EQ(r2.exit_code, 0) << r2.output;
+  EXPECT_NE(r1.output.find("grasp 1: P(held) "), std::string::npos) << r1.output;
+  EXPECT_NE(r1.output.find("P(held) above 0.80: "), std::string::npos) << r1.output;
+  const auto read = [](const std::string& path) {
+    std::ifstream in(path);
+    return nlohmann::json::parse(in);
+  };
+  const nlohmann::json a = read(one), b = read(two);
+  EXPECT_EQ(without_timings(a["grasps"]), without_timings(b["grasps"]));
+  const nlohmann::json& h = a["grasps"][0]["hold_probability"];
+  ASSERT_TRUE(h.is_object()) << a["grasps"][0].dump();
+  const int draws = h["draws"];
+  EXPECT_GE(draws, 5);
+  EXPECT_LE(draws, kMaxDraws);
+  ASSERT_EQ(h["draw_results"].size(), static_cast<size_t>(draws));
+  EXPECT_LE(h["low"].get<double>(), h["p"].get<double>());
+  EXPECT_GE(h["high"].get<double>(), h["p"].get<double>());
+  EXPECT_EQ(h["threshold"], 0.8);
+  // The two grasps are the same pinch, with their own draws (by grasp index).
+  EXPECT_NE(h["draw_results"][0]["mu_factor"],
+            a["grasps"][1]["hold_probability"]["draw_results"][0]["mu_factor"]);
+  EXPECT_EQ(a["parameters"]["uncertainty"]["mass_relative_spread"], 0.3);
+  EXPECT_EQ(a["parameters"]["hold_probability"]["max_draws"], kMaxDraws);
+  // Without --uncertainty: no P(held), and the nudged trials as before.
+  const auto plain = run_cordgrasp("validate --plan " + plan_path() + " --tests lift -q --out " +
+                                   out_path());
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  EXPECT_FALSE(read_out()["grasps"][0].contains("hold_probability"));
+  EXPECT_TRUE(read_out()["parameters"]["uncertainty"].is_null());
+}
+
+TEST_F(ValidateCli, UncertaintyFileWithABadFieldIsRefusedNamingItBeforeSimulating) {
+  const std::string file = (dir_ / "uncertainty.yaml").string();
+  std::ofstream(file) << "hand_offset_sigma_m: 0.002\nfriction_spread: 0.2\n";
+  expect_error("--uncertainty " + file, "'friction_spread'");
+  expect_error("--uncertainty " + file, file);
+  std::ofstream(file) << "hand_offset_sigma_m: 0.2\n";
+  expect_error("--uncertainty " + file, "hand_offset_sigma_m");
+  expect_error("--uncertainty realistic --min-hold-probability 1.5", "min-hold-probability");
 }
 
 TEST_F(ValidateCli, ZeroTrialsIsAnError) { expect_error("--trials 0", "trials"); }

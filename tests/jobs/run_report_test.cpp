@@ -62,5 +62,19 @@ TEST(RunReport, GraspRowGivesTheMotionWhileClosingAndTheFarthestPlannedContact) 
   EXPECT_NE(run_report_markdown(run.report).find("| 2.1, 2.9 | – |"), std::string::npos);
 }
 
+TEST(RunReport, GraspRowGivesPHeldWithItsIntervalAndWhatFailuresGoWith) {
+  DroppedInClose run(false);
+  EXPECT_EQ(run_report_markdown(run.report).find("P(held)"), std::string::npos);
+  HoldProbability h;
+  h.held = 16;
+  h.draws.resize(20);
+  h.interval = wilson_interval(16, 20);  // 0.80 [0.58, 0.92]
+  h.sensitivity.most_associated = UncertaintyFactor::kHandTurn;
+  run.report.sim->hold_probabilities = {h};
+  const std::string md = run_report_markdown(run.report);
+  EXPECT_NE(md.find("| P(held) [95 %] | draws | failures go with |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 0.80 [0.58, 0.92] | 20 | hand_turn |"), std::string::npos) << md;
+}
+
 }  // namespace
 }  // namespace cordgrasp

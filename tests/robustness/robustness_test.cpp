@@ -42,7 +42,8 @@ struct RobustnessCase {
 /// null is a NaN or an infinity the JSON writer turned into null.
 const std::set<std::string> kNullableKeys = {
     "failed_phase", "mass_kg", "held_trials", "trials", "planned_contact_offsets_m",
-    "close_shift_m", "close_turn_rad", "first_force_closure_s"};
+    "close_shift_m", "close_turn_rad", "first_force_closure_s", "uncertainty",
+    "hold_probability", "most_associated"};
 
 /// JSON paths of `j` holding a null outside kNullableKeys (an element of a nullable array too).
 void undocumented_nulls(const nlohmann::json& j, const std::string& path, const std::string& key,

@@ -190,6 +190,63 @@ TEST(PlanValidatedGrasps, TheLibraryAlgorithmAcceptsDistinctHeldGraspsAndTheJobA
                std::invalid_argument);
 }
 
+TEST(PlanValidatedGrasps, UnderUncertaintyAcceptsDecidedHoldProbabilitiesRankedTheSameForAnyJobs) {
+  constexpr int kMaxDraws = 6;         ///< 6 of 6 held: Wilson low 0.61
+  constexpr double kThreshold = 0.5;   ///< decidable within kMaxDraws
+  BoxPlan box(2);
+  box.v.tests = "lift";
+  box.v.uncertainty = UncertaintyParams{};  // realistic: ~20 candidates, ~5 s CPU per plan
+  box.v.min_hold_probability = kThreshold;
+  box.v.max_draws = kMaxDraws;
+  const SimLevelInputs in(box);
+  const auto plan = [&](int jobs) {
+    return plan_validated_grasps(box.mesh, box.hand, PlannerKind::kCord, in.plan, in.cord, box.v,
+                                 in.sim, jobs);
+  };
+  const ValidatedPlan one = plan(1);
+  ASSERT_FALSE(one.grasps.empty());
+  const std::vector<GraspValidation>& record = one.validation.grasps;
+  ASSERT_EQ(record.size(), one.grasps.size());
+  double last_p = 1.0;
+  for (const GraspValidation& g : record) {
+    EXPECT_LE(g.trials, kMaxDraws);
+    EXPECT_GT(wilson_interval(g.held_trials, g.trials).low, kThreshold);  // decided above
+    EXPECT_EQ(g.lift, Outcome::kHeld);  // and held as planned
+    const double p = static_cast<double>(g.held_trials) / g.trials;
+    EXPECT_LE(p, last_p);  // ranked by P(held)
+    last_p = p;
+  }
+  const ValidatedPlan two = plan(2);  // two draws at once: the same test, the same grasps
+  ASSERT_EQ(two.grasps.size(), one.grasps.size());
+  for (size_t k = 0; k < one.grasps.size(); ++k) {
+    EXPECT_TRUE(two.grasps[k].X_OB.matrix() == one.grasps[k].X_OB.matrix()) << k;
+    EXPECT_EQ(two.validation.grasps[k].held_trials, record[k].held_trials) << k;
+    EXPECT_EQ(two.validation.grasps[k].trials, record[k].trials) << k;
+  }
+  EXPECT_GE(two.validation.stats.trials_run, one.validation.stats.trials_run);
+
+  // The record keeps the model and reads back; a plan validated before P(held) (no such
+  // keys) reads as one accepted by nudged trials.
+  PlanDocument doc;
+  doc.hand_name = box.hand.name;
+  doc.grasps = one.grasps;
+  doc.validation = one.validation;
+  const nlohmann::json j = plan_to_json(doc, box.hand);
+  const PlanDocument back = plan_from_json(j, box.hand, "plan.json");
+  EXPECT_EQ(back.validation->params.uncertainty.mass_relative_spread,
+            UncertaintyParams{}.mass_relative_spread);
+  EXPECT_EQ(back.validation->params.max_draws, kMaxDraws);
+  nlohmann::json older = j;
+  for (const char* key : {"uncertainty", "min_hold_probability", "max_draws"})
+    older["validation"]["parameters"].erase(key);
+  const std::string dir = temp_dir("older");
+  std::ofstream(dir + "/plan.json") << older.dump();
+  const PlanDocument read =
+      plan_from_json(read_plan_json(dir + "/plan.json"), box.hand, dir + "/plan.json");
+  EXPECT_TRUE(is_none(read.validation->params.uncertainty));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(PlainPlanning, ReturnsGraspsThatDifferPairwiseOnEveryShippedObject) {
   // `cordgrasp plan --grasps 4` with its defaults (the default hand, the cord planner).
   constexpr int kGrasps = 4;

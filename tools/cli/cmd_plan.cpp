@@ -122,6 +122,7 @@ void add_plan_command(CLI::App& app) {
   add_units_option(cmd, opt->job);
   add_plan_settings_option(cmd, opt->job, opt->validation);
   add_validate_option(cmd, &opt->validate, &opt->validation.protocol);
+  add_uncertainty_options(cmd, opt->validation);
   cmd->add_option("--physics", opt->validation.physics_file,
                   std::string("--validate: ") + kPhysicsHelp);
   cmd->add_option("--jobs,-j", opt->jobs,

@@ -38,6 +38,7 @@ void add_run_command(CLI::App& app) {
   add_plan_settings_option(cmd, opt->run.job, opt->run.validation);
   add_enum_option(cmd, "--protocol", &opt->run.protocol, kProtocolHelp);
   cmd->add_option("--physics", opt->run.validation.physics_file, kPhysicsHelp);
+  add_uncertainty_options(cmd, opt->run.validation);
   cmd->add_option("--tests", opt->run.tests,
                   "Physics tests: any of lift,shake,gravity6, or none (plan force-closure "
                   "grasps only)")

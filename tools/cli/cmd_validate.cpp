@@ -50,14 +50,28 @@ void add_validate_command(CLI::App& app) {
                   "results do not depend on it (--snapshots runs one at a time)")
       ->check(whole_number_in(1, 256))
       ->capture_default_str();
-  cmd->add_option("--trials", opt->job.trials,
+  CLI::Option* trials = cmd->add_option(
+      "--trials", opt->job.trials,
                   "Simulate each grasp N times: as planned, then with the hand moved by " +
                       format_number(1e3 * PerturbationParams{}.offset_m) + " mm and turned by " +
                       format_number(1e3 * PerturbationParams{}.turn_rad) +
-                      " mrad (held / not-held of marginal grasps is chaotic; docs/physics.md)")
+                      " mrad (held / not-held of marginal grasps is chaotic; docs/physics.md); "
+                      "with --uncertainty, the most uncertain draws per grasp (default " +
+                      std::to_string(HoldProbabilityParams{}.max_draws) + ")");
+  trials
       ->check(settings_whole_number("validation.trials"))
       ->capture_default_str();
-  cmd->add_option("--seed", opt->job.seed, "Seed of the trials' random directions")
+  cmd->add_option("--uncertainty", opt->job.uncertainty,
+                  "P(held) of each grasp under uncertain hand pose, friction, mass, centre of "
+                  "mass and grip force: none, realistic, or a JSON/YAML file of their spreads "
+                  "(docs/physics.md §3b); draws until the 95 % interval is decided against "
+                  "--min-hold-probability")
+      ->capture_default_str();
+  cmd->add_option("--min-hold-probability", opt->job.min_hold_probability,
+                  "Acceptance threshold of P(held) with --uncertainty")
+      ->check(CLI::Range(0.01, 0.99))
+      ->capture_default_str();
+  cmd->add_option("--seed", opt->job.seed, "Seed of the trials' random directions and draws")
       ->check(seed_value())
       ->capture_default_str();
   cmd->add_option("--trace", opt->job.trace_path,
@@ -76,7 +90,9 @@ void add_validate_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--out", opt->job.out, "Output sim.json (required unless --print-physics)");
   cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
-  cmd->callback([opt, video_size]() {
+  cmd->callback([opt, video_size, trials]() {
+    if (opt->job.uncertainty != "none" && trials->count() == 0)
+      opt->job.trials = HoldProbabilityParams{}.max_draws;
     std::tie(opt->job.video.width_px, opt->job.video.height_px) = parse_image_size(*video_size);
     if (opt->print_physics) {
       std::cout << physics_settings_yaml(validate_job_physics(opt->job));
@@ -91,7 +107,10 @@ void add_validate_command(CLI::App& app) {
           std::fprintf(stderr, "validate: animations %d/%d\n", done, total);
         else
           std::fprintf(stderr, "validate: %s%d/%d grasps\n",
-                       stage == "grasps" ? "" : "trials of ", done, total);
+                       stage == "grasps"             ? ""
+                       : stage == "trials of grasps" ? "trials of "
+                                                     : "P(held) of ",
+                       done, total);
       };
     install_interrupt_handlers();
     opt->job.cancel = interrupt_token();

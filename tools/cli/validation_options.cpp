@@ -2,6 +2,7 @@
 
 #include "options.h"
 #include "cordgrasp/jobs/text_format.h"
+#include "cordgrasp/jobs/uncertainty_settings.h"
 #include "cordgrasp/sim/sim_params.h"
 
 namespace cordgrasp::cli {
@@ -49,6 +50,21 @@ void add_validation_options(CLI::App* cmd, ValidationParams& v) {
   add_trial_nudge_options(cmd, v.perturbation);
   cmd->add_option("--trial-seed", v.trial_seed, "Seed of the nudges' random directions")
       ->check(seed_value())
+      ->capture_default_str();
+}
+
+void add_uncertainty_options(CLI::App* cmd, ValidationParams& v) {
+  cmd->add_option_function<std::string>(
+         "--uncertainty",
+         [&v](const std::string& choice) { v.uncertainty = uncertainty_settings(choice); },
+         "Validated planning: accept a candidate held as planned when its P(held) under "
+         "uncertain hand pose, friction, mass, centre of mass and grip force (none, realistic, "
+         "or a JSON/YAML file of their spreads; docs/physics.md §3b) is decided above "
+         "--min-hold-probability within the settings' validation.max_draws draws; rank the "
+         "accepted grasps by it (default: none, the nudged trials)");
+  cmd->add_option("--min-hold-probability", v.min_hold_probability,
+                  "Acceptance threshold of P(held) with --uncertainty")
+      ->check(settings_number("validation.min_hold_probability"))
       ->capture_default_str();
 }
 

@@ -341,6 +341,16 @@ nlohmann::json read_plan_json(const std::string& path) {
   if (j.value("format_version", 0) != kFormatVersion)
     throw InputError("read_plan: '" + path + "': unsupported format_version " +
                      j.value("format_version", nlohmann::json(nullptr)).dump());
+  // Keys that plans validated before P(held) lack: they were accepted by nudged trials.
+  if (j.contains("validation") && j["validation"].is_object() &&
+      j["validation"].contains("parameters") && j["validation"]["parameters"].is_object()) {
+    nlohmann::json& v = j["validation"]["parameters"];
+    const ValidationParams defaults;
+    if (!v.contains("uncertainty")) v["uncertainty"] = params_to_json(defaults.uncertainty);
+    if (!v.contains("min_hold_probability"))
+      v["min_hold_probability"] = defaults.min_hold_probability;
+    if (!v.contains("max_draws")) v["max_draws"] = defaults.max_draws;
+  }
   // A relative hand or object path naming a file beside the plan is taken from the plan's
   // folder (a plan moved with its files); else it stays (a shipped name, or from the cwd).
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();

@@ -46,6 +46,8 @@ constexpr KeyRange kKeyRanges[] = {
     {"scale", 1e-6, 1000},
     {"validation.trials", 1, 1000},
     {"validation.min_held", 1, 1000},
+    {"validation.min_hold_probability", 0.01, 0.99},
+    {"validation.max_draws", 1, 1000},
     {"validation.budget_s", 1e-3, 1e6},
     {"validation.squeeze_shift_limit_m", 0, 10},
     {"validation.perturbation.offset_m", 0, 0.1},
@@ -116,6 +118,11 @@ void check_plan_settings(const PlanJobParams& job, const ValidationParams& valid
     throw std::invalid_argument("validation.min_held: " + std::to_string(validation.min_held) +
                                 " is more than validation.trials (" +
                                 std::to_string(validation.trials) + ")");
+  try {
+    check_uncertainty_params(validation.uncertainty);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("validation.uncertainty.") + e.what());
+  }
   try {
     (void)sim_tests_from_string(validation.tests);
   } catch (const std::invalid_argument& e) {

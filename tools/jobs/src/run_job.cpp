@@ -150,6 +150,23 @@ SimDocument physics_stage(const RunParams& opt, const RunInputs& in, const RunPr
                  sim_result_line(r));
       },
       hooks, opt.jobs, opt.cancel);
+  if (!is_none(opt.validation.uncertainty)) {
+    // P(held) again, with each grasp's own draws (by its index in the plan: not those that
+    // accepted it), so the report's interval is an independent check.
+    HoldProbabilityParams test;
+    test.min_hold_probability = opt.validation.min_hold_probability;
+    test.max_draws = opt.validation.max_draws;
+    test.min_draws = std::min(test.min_draws, test.max_draws);
+    test.seed = opt.validation.trial_seed;
+    add_hold_probabilities(
+        sim, written, in.hand, *in.mesh, opt.validation.uncertainty, test,
+        [&](int done, int total, const SimResult&) {
+          progress("physics: P(held) of grasp " + std::to_string(done) + "/" +
+                   std::to_string(total) + " " +
+                   hold_probability_line(sim.hold_probabilities[static_cast<size_t>(done - 1)]));
+        },
+        opt.jobs, opt.cancel);
+  }
   sim.plan_path = fs::absolute(in.plan_path).lexically_normal().string();
   report->sim_wall_s = seconds_since(t);
   write_sim_file(in.sim_path, sim, in.hand);

@@ -57,8 +57,15 @@ std::string run_report_markdown(const RunReport& rep) {
     md << "- Physics: skipped (`--tests none`)\n";
   if (plan.validation) {
     const ValidationParams& v = plan.validation->params;
-    md << "- Validated planning: accepted when held in ≥ " << v.min_held << " of " << v.trials
-       << " trials" << (v.require_held_as_planned ? ", the first as planned" : "") << " ("
+    if (is_none(v.uncertainty))
+      md << "- Validated planning: accepted when held in ≥ " << v.min_held << " of "
+         << v.trials << " trials" << (v.require_held_as_planned ? ", the first as planned" : "");
+    else
+      md << "- Validated planning: accepted when held as planned and P(held) under uncertainty "
+            "lies above "
+         << num(v.min_hold_probability, "%.2f") << " (Wilson 95 %, at most " << v.max_draws
+         << " draws), ranked by P(held)";
+    md << " ("
        << v.tests << ", " << to_string(v.protocol) << " protocol), squeeze shift "
        << "limit " << num(1e3 * v.squeeze_shift_limit_m, "%.0f") << " mm, budget "
        << num(v.budget_s) << " s\n";
@@ -104,10 +111,13 @@ std::string run_report_markdown(const RunReport& rep) {
        << to_string(rep.sim->tests) << ".";
   }
   const bool validated = plan.validation.has_value();
+  const bool uncertain = rep.sim && !rep.sim->hold_probabilities.empty();
   md << "\n\n| # | α [rad] | ε | χ [mm²] | region | contacts | physics | max penetration [mm] |"
         " closing: shift [mm], turn [°] | planned contacts to simulated, max [mm] |"
-     << (validated ? " held trials | squeeze shift [mm] |" : "") << "\n"
-     << "|---|---|---|---|---|---|---|---|---|---|" << (validated ? "---|---|" : "") << "\n";
+     << (validated ? " held trials | squeeze shift [mm] |" : "")
+     << (uncertain ? " P(held) [95 %] | draws | failures go with |" : "") << "\n"
+     << "|---|---|---|---|---|---|---|---|---|---|" << (validated ? "---|---|" : "")
+     << (uncertain ? "---|---|---|" : "") << "\n";
   for (int k = 0; k < n; ++k) {
     const Grasp& g = plan.grasps[static_cast<size_t>(k)];
     md << "| " << k << " | " << num(g.alpha_rad, "%.3f") << " | " << num(g.epsilon, "%.4f")
@@ -115,9 +125,13 @@ std::string run_report_markdown(const RunReport& rep) {
        << (g.region_rank ? std::to_string(*g.region_rank) : "–") << " | " << g.contacts.size()
        << " | ";
     const SimResult* r = nullptr;
+    const HoldProbability* hp = nullptr;
     if (rep.sim)
       for (size_t i = 0; i < rep.sim->grasp_indices.size(); ++i)
-        if (rep.sim->grasp_indices[i] == k) r = &rep.sim->results[i];
+        if (rep.sim->grasp_indices[i] == k) {
+          r = &rep.sim->results[i];
+          if (i < rep.sim->hold_probabilities.size()) hp = &rep.sim->hold_probabilities[i];
+        }
     if (r) {
       double pen = 0.0;
       for (const PhaseResult& p : r->phases) pen = std::max(pen, p.max_penetration_m);
@@ -139,8 +153,24 @@ std::string run_report_markdown(const RunReport& rep) {
       md << " " << gv.held_trials << " / " << gv.trials << " | "
          << num(1e3 * gv.squeeze_shift_m, "%.1f") << " |";
     }
+    if (uncertain) {
+      if (hp)
+        md << " " << hold_probability_text(*hp) << " | " << hp->draws.size() << " | "
+           << (hp->sensitivity.most_associated ? to_string(*hp->sensitivity.most_associated)
+                                               : "–")
+           << " |";
+      else
+        md << " – | – | – |";
+    }
     md << "\n";
   }
+  if (uncertain)
+    md << "\nP(held): the share of draws of hand pose, friction, mass, centre of mass and grip "
+          "force (docs/physics.md §3b) in which the grasp held, with its Wilson 95 % interval; "
+          "drawn until the interval lies above or below "
+       << num(rep.sim->hold_test.min_hold_probability, "%.2f")
+       << ". Failures go with: the factor whose draws differ most between failed and held "
+          "draws.\n";
   md << "\nα: skewness (0 = the hand's axis on the object's principal axis; "
         "docs/algorithm.md §9). ε: wrench-space quality (docs/algorithm.md §8). χ: XOR measure "
         "of the grasp region (docs/algorithm.md §6).\n";

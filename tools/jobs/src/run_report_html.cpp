@@ -67,10 +67,13 @@ void write_verdict_table(const RunReport& rep, std::ostream& html) {
   const std::vector<std::string> phases =
       rep.sim ? phase_columns(*rep.sim) : std::vector<std::string>{};
   const bool validated = plan.validation.has_value();
+  const bool uncertain = rep.sim && !rep.sim->hold_probabilities.empty();
   html << "<table class=\"verdicts\">\n<tr><th>#</th><th>α [rad]</th><th>ε</th>";
   for (const std::string& p : phases) html << "<th>" << html_escaped(p) << "</th>";
   html << "<th>shift while closing [mm]</th><th>held</th>"
-       << (validated ? "<th>held trials</th>" : "") << "<th>pictures</th></tr>\n";
+       << (validated ? "<th>held trials</th>" : "")
+       << (uncertain ? "<th>P(held) [95 %]</th><th>failures go with</th>" : "")
+       << "<th>pictures</th></tr>\n";
   for (size_t k = 0; k < plan.grasps.size(); ++k) {
     const Grasp& g = plan.grasps[k];
     const SimResult* r = result_of(rep, static_cast<int>(k));
@@ -91,6 +94,17 @@ void write_verdict_table(const RunReport& rep, std::ostream& html) {
       html << "<td class=\"num\">" << v.held_trials << " / " << v.trials << "</td>";
     } else if (validated) {
       html << "<td>–</td>";
+    }
+    if (uncertain) {
+      const HoldProbability* h = nullptr;
+      for (size_t i = 0; i < rep.sim->grasp_indices.size(); ++i)
+        if (rep.sim->grasp_indices[i] == static_cast<int>(k) &&
+            i < rep.sim->hold_probabilities.size())
+          h = &rep.sim->hold_probabilities[i];
+      html << "<td class=\"num\">" << (h ? hold_probability_text(*h) : "–") << "</td><td>"
+           << (h && h->sensitivity.most_associated ? to_string(*h->sensitivity.most_associated)
+                                                    : "–")
+           << "</td>";
     }
     html << "<td>"
          << (k < rep.pictures.size() ? "<a href=\"#grasp-" + std::to_string(k) + "\">grasp " +

@@ -26,6 +26,56 @@ constexpr int kFormatVersion = 2;
 
 nlohmann::json sim_params_to_json(const SimParams& p) { return params_to_json(p); }
 
+namespace {
+
+/// A grasp's hold_probability block: the estimate, each draw and the sensitivity.
+nlohmann::json hold_probability_to_json(const HoldProbability& h) {
+  nlohmann::json draws = nlohmann::json::array();
+  for (const UncertainDrawResult& d : h.draws) {
+    nlohmann::json scores = nlohmann::json::object();
+    for (int i = 0; i < kUncertaintyFactors; ++i)
+      scores[to_string(static_cast<UncertaintyFactor>(i))] = d.draw.scores[static_cast<size_t>(i)];
+    draws.push_back({{"trial", d.trial},
+                     {"outcome", to_string(d.outcome)},
+                     {"failed_phase", d.failed_phase.empty() ? nlohmann::json(nullptr)
+                                                             : nlohmann::json(d.failed_phase)},
+                     {"hand_offset_G_m", to_json(d.draw.hand_offset_G_m)},
+                     {"hand_turn_G_rad", to_json(d.draw.hand_turn_G_rad)},
+                     {"mu_factor", d.draw.mu_factor},
+                     {"mass_factor", d.draw.mass_factor},
+                     {"com_offset_O_m", to_json(d.draw.com_offset_O_m)},
+                     {"squeeze_factor", d.draw.squeeze_factor},
+                     {"scores", scores},
+                     {"wall_time_s", d.wall_time_s},
+                     {"cpu_s", d.cpu_s}});
+  }
+  nlohmann::json factors = nlohmann::json::array();
+  for (const FactorSensitivity& f : h.sensitivity.factors)
+    factors.push_back({{"factor", to_string(f.factor)},
+                       {"mean_score_failed", f.mean_failed},
+                       {"mean_score_held", f.mean_held},
+                       {"effect", f.effect}});
+  return {{"p", h.interval.p},
+          {"low", h.interval.low},
+          {"high", h.interval.high},
+          {"draws", static_cast<int>(h.draws.size())},
+          {"held", h.held},
+          {"threshold", h.threshold},
+          {"decided", h.verdict != HoldVerdict::kUndecided},
+          {"verdict", to_string(h.verdict)},
+          {"sensitivity",
+           {{"factors", factors},
+            {"most_associated", h.sensitivity.most_associated
+                                    ? nlohmann::json(to_string(*h.sensitivity.most_associated))
+                                    : nlohmann::json(nullptr)}}},
+          {"wall_time_s", h.wall_time_s},
+          {"cpu_s", h.cpu_s},
+          {"simulations", h.simulations},
+          {"draw_results", draws}};
+}
+
+}  // namespace
+
 nlohmann::json sim_result_to_json(const SimResult& r, const HandModel& hand) {
   nlohmann::json phases = nlohmann::json::array();
   for (const PhaseResult& p : r.phases) {
@@ -93,6 +143,8 @@ nlohmann::json sim_to_json(const SimDocument& doc, const HandModel& hand) {
       total_trials += static_cast<int>(trials.size());
       held_trials += trials_held;
     }
+    if (k < doc.hold_probabilities.size())
+      g["hold_probability"] = hold_probability_to_json(doc.hold_probabilities[k]);
     grasps.push_back(g);
     held += doc.results[k].held();
     ++outcomes[to_string(doc.results[k].outcome)];
@@ -120,6 +172,9 @@ nlohmann::json sim_to_json(const SimDocument& doc, const HandModel& hand) {
   params["trial_offset_m"] = doc.trial_perturbation.offset_m;
   params["trial_turn_rad"] = doc.trial_perturbation.turn_rad;
   params["trial_seed"] = doc.trial_seed;
+  const bool uncertain = !doc.hold_probabilities.empty();
+  params["uncertainty"] = uncertain ? params_to_json(doc.uncertainty) : nlohmann::json(nullptr);
+  params["hold_probability"] = uncertain ? params_to_json(doc.hold_test) : nlohmann::json(nullptr);
   nlohmann::json out = {{"format", kFormat},
           {"format_version", kFormatVersion},
           {"cordgrasp_version", version()},

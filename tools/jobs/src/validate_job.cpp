@@ -17,6 +17,7 @@
 #include "cordgrasp/jobs/render_options.h"
 #include "cordgrasp/jobs/sim_json.h"
 #include "cordgrasp/jobs/text_format.h"
+#include "cordgrasp/jobs/uncertainty_settings.h"
 #include "cordgrasp/render/renderer.h"
 #include "cordgrasp/sim/convex_decomposition.h"
 
@@ -66,6 +67,20 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   const HandModel hand = load_hand(hand_path, opt.hand_load);
   const PlanDocument plan = plan_from_json(plan_json, hand, opt.plan);  // throws for another hand
   SimParams params = physics_for_plan(opt, plan);  // settings errors before the mesh is read
+  const UncertaintyParams uncertainty = uncertainty_settings(opt.uncertainty);
+  const bool uncertain = !is_none(uncertainty);
+  HoldProbabilityParams hold_test;
+  hold_test.min_hold_probability = opt.min_hold_probability;
+  hold_test.max_draws = opt.trials;
+  hold_test.min_draws = std::min(hold_test.min_draws, opt.trials);
+  hold_test.seed = opt.seed;
+  if (uncertain) {
+    try {
+      check_hold_probability_params(hold_test);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(std::string("validate: --min-hold-probability / --trials: ") + e.what());
+    }
+  }
 
   // Object: the plan's, or the one given (which must be the plan's geometry).
   MeshLoadOptions mesh_opt;
@@ -153,7 +168,7 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   const std::vector<int> trial_index = doc.grasp_indices;  // results' grasps before the trials
   std::vector<std::vector<SimResult>> trial_results;
   TrialWatch watch;
-  if (video && opt.trials > 1) {
+  if (video && opt.trials > 1 && !uncertain) {
     trial_samples.assign(doc.results.size(), std::vector<std::vector<PhaseSnapshot>>(
                                                  static_cast<size_t>(opt.trials)));
     trial_results.assign(doc.results.size(), std::vector<SimResult>(size_t(opt.trials)));
@@ -164,7 +179,17 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
     };
     watch.done = [&](int k, int t, const SimResult& r) { trial_results[size_t(k)][size_t(t)] = r; };
   }
-  if (opt.trials > 1)  // interrupted above: no trial runs, and no grasp has all its trials
+  if (uncertain)  // P(held): the draws of each grasp in order until its test is decided
+    add_hold_probabilities(doc, plan, hand, mesh, uncertainty, hold_test,
+                           [&](int done, int total, const SimResult&) {
+                             if (cb.grasp_line)
+                               cb.grasp_line("grasp " + std::to_string(done - 1) + ": " +
+                                             hold_probability_line(doc.hold_probabilities[
+                                                 static_cast<size_t>(done - 1)]));
+                             if (cb.progress) cb.progress("P(held) of grasps", done, total);
+                           },
+                           opt.jobs, opt.cancel);
+  else if (opt.trials > 1)  // interrupted above: no trial runs, no grasp has all its trials
     add_perturbed_trials(doc, plan, hand, mesh, opt.trials, opt.perturbation, opt.seed,
                          [&](int done, int total, const SimResult&) {
                            if (cb.grasp_line)

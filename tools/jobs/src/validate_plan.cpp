@@ -36,6 +36,8 @@ void keep_grasps(SimDocument& doc, const std::vector<char>& keep) {
     if (k < doc.trial_outcomes.size()) doc.trial_outcomes[to] = std::move(doc.trial_outcomes[k]);
     if (k < doc.trial_close_motion.size())
       doc.trial_close_motion[to] = std::move(doc.trial_close_motion[k]);
+    if (k < doc.hold_probabilities.size())
+      doc.hold_probabilities[to] = std::move(doc.hold_probabilities[k]);
     ++to;
   }
   doc.results.resize(to);
@@ -43,6 +45,7 @@ void keep_grasps(SimDocument& doc, const std::vector<char>& keep) {
   doc.grasp_indices.resize(to);
   if (!doc.trial_outcomes.empty()) doc.trial_outcomes.resize(to);
   if (!doc.trial_close_motion.empty()) doc.trial_close_motion.resize(to);
+  if (!doc.hold_probabilities.empty()) doc.hold_probabilities.resize(to);
 }
 
 }  // namespace
@@ -149,6 +152,39 @@ void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const Hand
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+void add_hold_probabilities(SimDocument& doc, const PlanDocument& plan, const HandModel& hand,
+                            const Mesh& mesh, const UncertaintyParams& uncertainty,
+                            const HoldProbabilityParams& test, const ValidateProgress& progress,
+                            int jobs, const CancelToken& cancel) {
+  check_uncertainty_params(uncertainty);
+  check_hold_probability_params(test);
+  const auto start = std::chrono::steady_clock::now();
+  doc.uncertainty = uncertainty;
+  doc.hold_test = test;
+  const int total = static_cast<int>(doc.results.size());
+  doc.hold_probabilities.assign(doc.results.size(), {});
+  InOrderReporter reporter(total, [&](int k) {
+    if (progress) progress(k + 1, total, doc.results[static_cast<size_t>(k)]);
+  });
+  // One task per grasp: its draws run in order, so where the test stops is deterministic.
+  parallel_for(total, jobs, [&](int k) {
+    const size_t i = static_cast<size_t>(k);
+    const int index = doc.grasp_indices[i];
+    doc.hold_probabilities[i] = estimate_hold_probability(
+        mesh, hand, plan.grasps[static_cast<size_t>(index)], index, doc.params, doc.tests,
+        uncertainty, test, cancel);
+    reporter.finished(k);
+  });
+  std::vector<char> complete(static_cast<size_t>(total), 0);
+  for (size_t k = 0; k < complete.size(); ++k) complete[k] = doc.hold_probabilities[k].complete;
+  if (std::count(complete.begin(), complete.end(), 0) > 0) {
+    keep_grasps(doc, complete);
+    doc.interrupted = cancel.reason();
+  }
+  doc.wall_time_s +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 std::string validation_summary(const SimDocument& doc, const std::string& tests,
                                const std::string& out_path) {
   int held = 0;
@@ -161,6 +197,20 @@ std::string validation_summary(const SimDocument& doc, const std::string& tests,
     std::vector<Outcome> all;
     for (const auto& t : doc.trial_outcomes) all.insert(all.end(), t.begin(), t.end());
     text += trials_line(all) + " of all grasps\n";
+  }
+  if (!doc.hold_probabilities.empty()) {
+    int above = 0;
+    std::vector<int> draws;
+    for (const HoldProbability& h : doc.hold_probabilities) {
+      above += h.verdict == HoldVerdict::kAbove;
+      draws.push_back(static_cast<int>(h.draws.size()));
+    }
+    std::sort(draws.begin(), draws.end());
+    char line[128];
+    std::snprintf(line, sizeof(line), "P(held) above %.2f: %d of %d grasps, median draws %d\n",
+                  doc.hold_test.min_hold_probability, above, static_cast<int>(draws.size()),
+                  draws.empty() ? 0 : draws[draws.size() / 2]);
+    text += line;
   }
   return text;
 }

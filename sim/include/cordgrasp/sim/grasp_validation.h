@@ -10,6 +10,7 @@
 #include "cordgrasp/core/grasp.h"
 #include "cordgrasp/core/grasp_perturbation.h"
 #include "cordgrasp/core/serialize.h"
+#include "cordgrasp/sim/grasp_uncertainty.h"
 #include "cordgrasp/sim/sim_params.h"
 #include "cordgrasp/sim/sim_result.h"
 
@@ -27,6 +28,14 @@ struct ValidationParams {
   /// ...of which the first, the grasp as planned (the one plan.json stores), must be one:
   /// a grasp that fails as planned fails again in every later `validate` of the plan.
   bool require_held_as_planned = true;
+  /// Uncertainty of the P(held) test (docs/physics.md §3b); all 0 (uncertainty_none, the
+  /// default): trials and min_held decide. Otherwise a candidate held as planned is accepted
+  /// when the Wilson 95 % interval of its P(held) lies above min_hold_probability, within
+  /// max_draws draws (seeded by trial_seed and the candidate's index), and the accepted grasps
+  /// are ranked by P(held).
+  UncertaintyParams uncertainty = uncertainty_none();
+  double min_hold_probability = 0.8;  ///< acceptance threshold of P(held) [-]
+  int max_draws = 20;                 ///< draws per candidate at most
   /// Cap on the CPU time of planning and physics together (all threads of the process) [s];
   /// the planner's own time limit (PlanParams::time_limit_s) is ignored.
   double budget_s = 30.0;
@@ -47,6 +56,8 @@ struct ValidationParams {
   void Serialize(Archive* a) {
     visit_fields(a, CORDGRASP_NVP(tests), CORDGRASP_NVP(protocol), CORDGRASP_NVP(trials),
                  CORDGRASP_NVP(min_held), CORDGRASP_NVP(require_held_as_planned),
+                 CORDGRASP_NVP(uncertainty), CORDGRASP_NVP(min_hold_probability),
+                 CORDGRASP_NVP(max_draws),
                  CORDGRASP_NVP(budget_s),
                  CORDGRASP_NVP(squeeze_shift_limit_m), CORDGRASP_NVP(perturbation),
                  CORDGRASP_NVP(trial_seed), CORDGRASP_NVP(physics),
@@ -56,8 +67,8 @@ struct ValidationParams {
 
 /// Physics verdict on one accepted grasp.
 struct GraspValidation {
-  int held_trials = 0;  ///< trials in which it held
-  int trials = 0;       ///< trials run
+  int held_trials = 0;  ///< trials (with uncertainty: draws after the as-planned one) held
+  int trials = 0;       ///< trials run (with uncertainty: draws; P(held) = held / draws)
   /// Outcome of each phase in the first trial (the grasp as planned).
   Outcome settle = Outcome::kNotRun;
   Outcome close = Outcome::kNotRun;

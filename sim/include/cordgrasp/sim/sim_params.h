@@ -114,6 +114,11 @@ struct SimParams {
   DecompositionParams decomposition;
   /// Directory of the on-disk decomposition cache, keyed by mesh hash; empty: memory only.
   std::string decomposition_cache_dir;
+  /// Centre of mass moved from the solid's (or shell's) by this along x_O, y_O, z_O [m]; the
+  /// inertia follows (parallel axes). 0: the uniform solid's (uncertain trials move it).
+  double com_offset_x_m = 0.0;
+  double com_offset_y_m = 0.0;  ///< ... along y_O [m]
+  double com_offset_z_m = 0.0;  ///< ... along z_O [m]
 
   // --- Hand --------------------------------------------------------------------------------
   /// Peak reach speed per unit of an actor's direction_speed [rad/s], capped by the URDF.
@@ -250,7 +255,9 @@ struct SimParams {
                  CORDGRASP_NVP(open_mesh_shell_m),
                  CORDGRASP_NVP(mass_kg), CORDGRASP_NVP(object_shape),
                  CORDGRASP_NVP(convex_volume_ratio), CORDGRASP_NVP(decomposition),
-                 CORDGRASP_NVP(decomposition_cache_dir), CORDGRASP_NVP(close_speed),
+                 CORDGRASP_NVP(decomposition_cache_dir), CORDGRASP_NVP(com_offset_x_m),
+                 CORDGRASP_NVP(com_offset_y_m), CORDGRASP_NVP(com_offset_z_m),
+                 CORDGRASP_NVP(close_speed),
                  CORDGRASP_NVP(squeeze_rad), CORDGRASP_NVP(squeeze_m));
     a->Visit(CORDGRASP_NVP(default_effort_Nm));
     a->Visit(CORDGRASP_NVP(default_effort_N));

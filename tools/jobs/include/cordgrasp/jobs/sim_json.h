@@ -12,12 +12,22 @@
 //   grasps: [{index (in the plan), outcome, failed_phase (null when held), detail, epsilon,
 //             force_closure, wall_time_s, trials (with --trials N > 1: {count, held,
 //             outcomes: [trial 0 = the plan as written, then perturbed copies]}),
+//             hold_probability (with --uncertainty other than none: {p, low, high (Wilson
+//               95 %), draws, held, threshold, decided, verdict (above, below, undecided),
+//               sensitivity: {factors: [{factor, mean_score_failed, mean_score_held,
+//               effect}], most_associated (null unless some draws held and some failed)},
+//               wall_time_s, cpu_s, simulations (draws simulated), draw_results: [{trial,
+//               outcome, failed_phase, hand_offset_G_m, hand_turn_G_rad, mu_factor,
+//               mass_factor, com_offset_O_m, squeeze_factor, scores: {factor: standardized
+//               draw}, wall_time_s, cpu_s}]}),
 //             phases: [{name, outcome, detail, translation_m, rotation_rad, max_translation_m,
 //                       in_contact, contact_count, max_contact_count, max_penetration_m,
 //                       joint_efforts: {joint: N·m or N}, sim_time_s, wall_time_s, steps}]}]
 //   summary: {grasps, held, outcomes: {held, slipped, dropped, unstable}, wall_time_s,
 //             trials, held_trials (over every trial of every grasp)}
-//   parameters also: trials, trial_offset_m, trial_turn_rad, trial_seed
+//   parameters also: trials, trial_offset_m, trial_turn_rad, trial_seed, uncertainty
+//             (UncertaintyParams, null without --uncertainty) and hold_probability
+//             (HoldProbabilityParams, null likewise)
 //   complete: false when the validation was interrupted (SIGINT), with interrupted: "SIGINT";
 //             grasps then holds only those whose every trial finished (json_completeness.h;
 //             absent in older files: true)

@@ -35,10 +35,17 @@ struct ValidateJobParams {
   std::string physics_file;
   std::string cache_dir;  ///< SimParams::decomposition_cache_dir, unless the file sets it
   int grasps = -1;
+  /// Simulations per grasp: as planned, then nudged (perturbation); with `uncertainty` other
+  /// than none, the most draws of the sequential P(held) test after the as-planned one.
   int trials = 1;
+  /// "none" (trials are nudges), "realistic" or an uncertainty settings file
+  /// (uncertainty_settings): each grasp's P(held) under uncertainty, after its as-planned run.
+  std::string uncertainty = "none";
+  /// Acceptance threshold of the P(held) test (HoldProbabilityParams) [-].
+  double min_hold_probability = HoldProbabilityParams{}.min_hold_probability;
   int jobs = 1;  ///< threads (one physics world each); results do not depend on it
   PerturbationParams perturbation;
-  std::uint64_t seed = 1;
+  std::uint64_t seed = 1;  ///< seed of the nudges or the uncertain draws
   std::string snapshots_dir;
   /// Existing folder: one animated WebP per grasp, grasp_K.webp, and per nudged trial,
   /// grasp_K_trial_T.webp, of its phases.

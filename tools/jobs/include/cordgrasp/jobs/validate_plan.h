@@ -13,6 +13,7 @@
 #include "cordgrasp/core/hand_model.h"
 #include "cordgrasp/core/mesh.h"
 #include "cordgrasp/jobs/plan_json.h"
+#include "cordgrasp/sim/hold_probability.h"
 #include "cordgrasp/sim/validate_grasp.h"
 
 namespace cordgrasp {
@@ -43,6 +44,11 @@ struct SimDocument {
   PerturbationParams trial_perturbation;
   std::uint64_t trial_seed = 1;
   int trials = 1;  ///< simulations asked for per grasp (add_perturbed_trials)
+  /// P(held) under uncertainty (add_hold_probabilities), per grasp as results; empty when
+  /// not asked for.
+  std::vector<HoldProbability> hold_probabilities;
+  UncertaintyParams uncertainty = uncertainty_none();  ///< the model of hold_probabilities
+  HoldProbabilityParams hold_test;  ///< its sequential test
   /// The signal that stopped the validation early ("SIGINT"), "" when it ran to its end; the
   /// document then holds only the grasps whose every simulation finished.
   std::string interrupted;
@@ -87,8 +93,22 @@ void add_perturbed_trials(SimDocument& doc, const PlanDocument& plan, const Hand
                           int jobs = 1, const CancelToken& cancel = {},
                           const TrialWatch& watch = {});
 
+/// P(held) of every grasp of `doc` under `uncertainty` (estimate_hold_probability with
+/// doc.params and doc.tests, each grasp by its index in the plan), into
+/// doc.hold_probabilities; the as-planned results stay. `jobs` threads estimate grasps at once
+/// (each grasp's draws run in order; results independent of `jobs`); `progress` is called in
+/// grasp order. Once `cancel` is set no further draw starts; grasps whose test did not finish
+/// are removed from `doc` and doc.interrupted set.
+/// @throws std::invalid_argument for bad parameters.
+void add_hold_probabilities(SimDocument& doc, const PlanDocument& plan, const HandModel& hand,
+                            const Mesh& mesh, const UncertaintyParams& uncertainty,
+                            const HoldProbabilityParams& test,
+                            const ValidateProgress& progress = {}, int jobs = 1,
+                            const CancelToken& cancel = {});
+
 /// The closing lines of a validation: "held 2 / 3 (tests lift,shake, mu 0.5) -> OUT", the
-/// failures_line and, with trials, "held in k / N trials of all grasps"; each ends in '\n'.
+/// failures_line and, with trials, "held in k / N trials of all grasps" (with P(held):
+/// "P(held) above 0.8: k of N grasps, median draws D"); each ends in '\n'.
 std::string validation_summary(const SimDocument& doc, const std::string& tests,
                                const std::string& out_path);
 
