@@ -180,8 +180,10 @@ void check_ply_header(const std::string& path, uintmax_t file_bytes) {
   fail(path, "PLY header without an 'end_header' line");
 }
 
-// assimp 5.2's OFF reader crashes on a face line with no vertices ("0"): a file that starts
-// like OFF must give each face a vertex count >= 1 and indices below its vertex count.
+// assimp 5.2's OFF reader crashes on a face line with no vertices ("0") and on one that does
+// not hold its vertex count's indices ("3ply"): a file that starts like OFF must give each face
+// line a vertex count >= 1 and that many whole-number indices below its vertex count (colours
+// may follow).
 void check_off_faces(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::vector<std::string> lines;  // non-empty lines without comments
@@ -192,16 +194,33 @@ void check_off_faces(const std::string& path) {
     lines.push_back(line);
   }
   if (lines.empty()) return;
-  std::istringstream counts(lines.size() > 1 ? lines[1] : "");
+  // The counts follow the keyword on its line ("OFF 4 4 6") or on the next one.
+  const std::string after_keyword = lines[0].substr(lines[0].find("OFF") + 3);
+  const bool counts_inline = after_keyword.find_first_of("0123456789") != std::string::npos;
+  const size_t first_vertex_line = counts_inline ? 1 : 2;
+  std::istringstream counts(counts_inline ? after_keyword : lines.size() > 1 ? lines[1] : "");
   long long vertices = 0, faces = 0;
   if (!(counts >> vertices >> faces) || vertices < 0 || faces < 0) return;  // assimp's to judge
-  for (long long f = 0; f < faces && size_t(2 + vertices + f) < lines.size(); ++f) {
-    std::istringstream face(lines[size_t(2 + vertices + f)]);
+  for (long long f = 0; f < faces && size_t(first_vertex_line + vertices + f) < lines.size(); ++f) {
+    std::istringstream face(lines[size_t(first_vertex_line + vertices + f)]);
     long long n = 0;
-    if (!(face >> n)) return;
+    if (!(face >> n)) fail(path, "a face line without a vertex count");
     if (n < 1) fail(path, "a face without vertices");
-    for (long long k = 0, index = 0; k < n && face >> index; ++k)
+    for (long long k = 0; k < n; ++k) {
+      std::string token;
+      size_t used = 0;
+      long long index = -1;
+      if (face >> token) {
+        try {
+          index = std::stoll(token, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+      }
+      if (used == 0 || used != token.size())
+        fail(path, "a face line without its " + std::to_string(n) + " vertex indices");
       if (index < 0 || index >= vertices) fail(path, "a face index past the vertices");
+    }
   }
 }
 
