@@ -569,6 +569,11 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
         const double c2 = v.normalized().dot((towards + normal_W).normalized());
         if (std::abs(c2) > std::abs(c)) c = c2;
       }
+      if (is_thumb && !opposed && joint.type != JointType::kPrismatic) {
+        // ... or towards them and the palm (a human-like thumb standing out of the palm face).
+        const double c3 = v.normalized().dot((towards - normal_W).normalized());
+        if (std::abs(c3) > std::abs(c)) c = c3;
+      }
       if (std::abs(c) < kMinClosingCosine) continue;
       const double speed =
           (c > 0 ? 1.0 : -1.0) * (joint.type == JointType::kPrismatic ? 0.1 : 1.0);
