@@ -569,8 +569,10 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
         const double c2 = v.normalized().dot((towards + normal_W).normalized());
         if (std::abs(c2) > std::abs(c)) c = c2;
       }
-      if (is_thumb && !opposed && joint.type != JointType::kPrismatic) {
-        // ... or towards them and the palm (a human-like thumb standing out of the palm face).
+      if (is_thumb && !opposed && joint.type != JointType::kPrismatic &&
+          std::abs(c) < kMinClosingCosine) {
+        // Failing both, towards them and the palm (a human-like thumb standing out of the palm
+        // face closes up it and back towards it).
         const double c3 = v.normalized().dot((towards - normal_W).normalized());
         if (std::abs(c3) > std::abs(c)) c = c3;
       }
@@ -741,7 +743,10 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     if (q_open[j] != 0.0 && hand.joints[j].is_moving() && !hand.joints[j].mimic) {
       if (!any) y << "preshape:\n";
       any = true;
-      y << "  " << quoted(hand.joints[j].name) << ": " << num(q_open[j]) << "\n";
+      // Every digit: a joint limit rounded to 6 digits may lie outside the limits on load.
+      std::ostringstream exact;
+      exact << std::setprecision(17) << q_open[j];
+      y << "  " << quoted(hand.joints[j].name) << ": " << exact.str() << "\n";
     }
   y << "actors:\n";
   for (const Actor& a : hand.actors) {
