@@ -24,6 +24,9 @@ namespace {
 /// A joint closes its finger when the tip moves at least this much along the closing direction
 /// (cosine of the angle between the tip velocity and that direction).
 constexpr double kMinClosingCosine = 0.5;
+/// A thumb joint whose tip motion has at least this cosine with the direction to the other
+/// fingertips (or its reverse) closes with that sign, whatever the palm's side adds.
+constexpr double kThumbSignCosine = 0.25;
 /// Finite-difference step for tip velocities [rad or m].
 constexpr double kStep = 1e-3;
 /// Revolute limits count as asymmetric (a flexion joint) when the larger side exceeds the
@@ -565,16 +568,16 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
       }
       double c = v.normalized().dot(towards);
       if ((is_thumb || opposed) && joint.type != JointType::kPrismatic) {
-        // A revolute thumb closes towards the others, or towards them and the palm's front.
+        // A revolute thumb closes towards the others, or towards them and the palm's front, or
+        // (not opposed) towards them and the palm: a human-like thumb standing out of the palm
+        // face closes up it and back towards it. When the tip clearly moves towards or away
+        // from the others, that decides the sign; the palm's side only adds confidence.
         const double c2 = v.normalized().dot((towards + normal_W).normalized());
-        if (std::abs(c2) > std::abs(c)) c = c2;
-      }
-      if (is_thumb && !opposed && joint.type != JointType::kPrismatic &&
-          std::abs(c) < kMinClosingCosine) {
-        // Failing both, towards them and the palm (a human-like thumb standing out of the palm
-        // face closes up it and back towards it).
-        const double c3 = v.normalized().dot((towards - normal_W).normalized());
-        if (std::abs(c3) > std::abs(c)) c = c3;
+        const bool sign_of_c = is_thumb && !opposed && std::abs(c) >= kThumbSignCosine;
+        const double c3 =
+            sign_of_c ? v.normalized().dot((towards - normal_W).normalized()) : 0.0;
+        for (const double ci : {c2, c3})
+          if (std::abs(ci) > std::abs(c) && (!sign_of_c || ci * c > 0.0)) c = ci;
       }
       if (std::abs(c) < kMinClosingCosine) continue;
       const double speed =
