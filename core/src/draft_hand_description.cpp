@@ -27,6 +27,8 @@ constexpr double kMinClosingCosine = 0.5;
 /// A thumb joint whose tip motion has at least this cosine with the direction to the other
 /// fingertips (or its reverse) closes with that sign, whatever the palm's side adds.
 constexpr double kThumbSignCosine = 0.25;
+/// Opposed digits' closing joints open by at most this much in the drafted preshape [rad].
+constexpr double kOpenOpposed_rad = M_PI / 4;
 /// Finite-difference step for tip velocities [rad or m].
 constexpr double kStep = 1e-3;
 /// Revolute limits count as asymmetric (a flexion joint) when the larger side exceeds the
@@ -605,13 +607,19 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   if (hand.actors.empty())
     throw InputError("hand init: '" + urdf_path + "': no joint closes any finger");
   for (int l : fingers[thumb].links) hand.thumb_links.push_back(l);
-  // Prismatic closing joints start open: at the limit their closing motion leaves.
+  // Prismatic closing joints start open: at the limit their closing motion leaves. Opposed
+  // digits open away from where they meet, each closing joint to its limit or by at most
+  // kOpenOpposed_rad, so that objects wider than their stance fit between them.
   Eigen::VectorXd q_open = q0;
   for (const Actor& a : hand.actors)
     for (const auto& e : a.joints) {
       const Joint& joint = hand.joints[e.joint];
       if (joint.type == JointType::kPrismatic)
         q_open[e.joint] = e.direction_speed > 0 ? joint.lower : joint.upper;
+      else if (opposed && joint.type == JointType::kRevolute)
+        q_open[e.joint] = e.direction_speed > 0
+                              ? std::max(joint.lower, q0[e.joint] - kOpenOpposed_rad)
+                              : std::min(joint.upper, q0[e.joint] + kOpenOpposed_rad);
     }
   if (q_open != q0) {
     hand.preshape = clamp_to_limits(hand, apply_couplings(hand, q_open));
@@ -701,7 +709,9 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     int nonzero = 0;
     for (Eigen::Index j = 0; j < q_open.size(); ++j) nonzero += q_open[j] != 0.0;
     guess("preshape", nonzero ? std::to_string(nonzero) + " joints not at 0" : "all joints 0",
-          0.5, "the URDF's zero configuration clamped to the limits; prismatic jaws open");
+          0.5,
+          std::string("the URDF's zero configuration clamped to the limits; prismatic jaws open") +
+              (opposed ? "; opposed digits open away from where they meet (45° at most)" : ""));
   }
   int mimics = 0;
   for (const Joint& j : hand.joints) mimics += j.mimic.has_value();
