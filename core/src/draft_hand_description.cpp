@@ -550,6 +550,7 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     Actor actor;
     actor.name = is_thumb ? "thumb" : finger_name(hand, f);
     double worst = 1.0;
+    std::vector<double> closing_cosine;  // per listed joint
     std::ostringstream listed;
     for (int j : f.joints) {
       const Joint& joint = hand.joints[j];
@@ -585,9 +586,27 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
       const double speed =
           (c > 0 ? 1.0 : -1.0) * (joint.type == JointType::kPrismatic ? 0.1 : 1.0);
       actor.joints.push_back({j, speed});
+      closing_cosine.push_back(std::abs(c));
       worst = std::min(worst, std::abs(c));
-      listed << (actor.joints.size() > 1 ? ", " : "") << joint.name << (c > 0 ? " +" : " -");
     }
+    // A revolute thumb's joints about one axis curl it one way: the surest sets the sign of
+    // the others (a distal joint's tip motion, from a box corner, can point the other way).
+    if (is_thumb && !opposed && actor.joints.size() > 1) {
+      const size_t sure = static_cast<size_t>(
+          std::max_element(closing_cosine.begin(), closing_cosine.end()) -
+          closing_cosine.begin());
+      const Eigen::Vector3d ref = axis_W(actor.joints[sure].joint);
+      const double ref_sign = actor.joints[sure].direction_speed > 0 ? 1.0 : -1.0;
+      for (auto& e : actor.joints) {
+        if (hand.joints[e.joint].type != JointType::kRevolute) continue;
+        const double a = axis_W(e.joint).dot(ref);
+        if (std::abs(a) >= kSameAxisCosine)
+          e.direction_speed = std::abs(e.direction_speed) * ref_sign * (a > 0 ? 1.0 : -1.0);
+      }
+    }
+    for (size_t k = 0; k < actor.joints.size(); ++k)
+      listed << (k ? ", " : "") << hand.joints[actor.joints[k].joint].name
+             << (actor.joints[k].direction_speed > 0 ? " +" : " -");
     // A thumb with more closing joints than two: its root joint turns it into opposition.
     if (is_thumb && actor.joints.size() > 2 && actor.joints.front().joint == f.joints.front()) {
       actor.joints.erase(actor.joints.begin());
