@@ -24,6 +24,11 @@ namespace {
 /// A joint closes its finger when the tip moves at least this much along the closing direction
 /// (cosine of the angle between the tip velocity and that direction).
 constexpr double kMinClosingCosine = 0.5;
+/// A thumb joint whose tip motion has at least this cosine with the direction to the other
+/// fingertips (or its reverse) closes with that sign, whatever the palm's side adds.
+constexpr double kThumbSignCosine = 0.25;
+/// Opposed digits' closing joints open by at most this much in the drafted preshape [rad].
+constexpr double kOpenOpposed_rad = M_PI / 4;
 /// Finite-difference step for tip velocities [rad or m].
 constexpr double kStep = 1e-3;
 /// Revolute limits count as asymmetric (a flexion joint) when the larger side exceeds the
@@ -545,6 +550,7 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     Actor actor;
     actor.name = is_thumb ? "thumb" : finger_name(hand, f);
     double worst = 1.0;
+    std::vector<double> closing_cosine;  // per listed joint
     std::ostringstream listed;
     for (int j : f.joints) {
       const Joint& joint = hand.joints[j];
@@ -565,17 +571,42 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
       }
       double c = v.normalized().dot(towards);
       if ((is_thumb || opposed) && joint.type != JointType::kPrismatic) {
-        // A revolute thumb closes towards the others, or towards them and the palm's front.
+        // A revolute thumb closes towards the others, or towards them and the palm's front, or
+        // (not opposed) towards them and the palm: a human-like thumb standing out of the palm
+        // face closes up it and back towards it. When the tip clearly moves towards or away
+        // from the others, that decides the sign; the palm's side only adds confidence.
         const double c2 = v.normalized().dot((towards + normal_W).normalized());
-        if (std::abs(c2) > std::abs(c)) c = c2;
+        const bool sign_of_c = is_thumb && !opposed && std::abs(c) >= kThumbSignCosine;
+        const double c3 =
+            sign_of_c ? v.normalized().dot((towards - normal_W).normalized()) : 0.0;
+        for (const double ci : {c2, c3})
+          if (std::abs(ci) > std::abs(c) && (!sign_of_c || ci * c > 0.0)) c = ci;
       }
       if (std::abs(c) < kMinClosingCosine) continue;
       const double speed =
           (c > 0 ? 1.0 : -1.0) * (joint.type == JointType::kPrismatic ? 0.1 : 1.0);
       actor.joints.push_back({j, speed});
+      closing_cosine.push_back(std::abs(c));
       worst = std::min(worst, std::abs(c));
-      listed << (actor.joints.size() > 1 ? ", " : "") << joint.name << (c > 0 ? " +" : " -");
     }
+    // A revolute thumb's joints about one axis curl it one way: the surest sets the sign of
+    // the others (a distal joint's tip motion, from a box corner, can point the other way).
+    if (is_thumb && !opposed && actor.joints.size() > 1) {
+      const size_t sure = static_cast<size_t>(
+          std::max_element(closing_cosine.begin(), closing_cosine.end()) -
+          closing_cosine.begin());
+      const Eigen::Vector3d ref = axis_W(actor.joints[sure].joint);
+      const double ref_sign = actor.joints[sure].direction_speed > 0 ? 1.0 : -1.0;
+      for (auto& e : actor.joints) {
+        if (hand.joints[e.joint].type != JointType::kRevolute) continue;
+        const double a = axis_W(e.joint).dot(ref);
+        if (std::abs(a) >= kSameAxisCosine)
+          e.direction_speed = std::abs(e.direction_speed) * ref_sign * (a > 0 ? 1.0 : -1.0);
+      }
+    }
+    for (size_t k = 0; k < actor.joints.size(); ++k)
+      listed << (k ? ", " : "") << hand.joints[actor.joints[k].joint].name
+             << (actor.joints[k].direction_speed > 0 ? " +" : " -");
     // A thumb with more closing joints than two: its root joint turns it into opposition.
     if (is_thumb && actor.joints.size() > 2 && actor.joints.front().joint == f.joints.front()) {
       actor.joints.erase(actor.joints.begin());
@@ -595,13 +626,19 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   if (hand.actors.empty())
     throw InputError("hand init: '" + urdf_path + "': no joint closes any finger");
   for (int l : fingers[thumb].links) hand.thumb_links.push_back(l);
-  // Prismatic closing joints start open: at the limit their closing motion leaves.
+  // Prismatic closing joints start open: at the limit their closing motion leaves. Opposed
+  // digits open away from where they meet, each closing joint to its limit or by at most
+  // kOpenOpposed_rad, so that objects wider than their stance fit between them.
   Eigen::VectorXd q_open = q0;
   for (const Actor& a : hand.actors)
     for (const auto& e : a.joints) {
       const Joint& joint = hand.joints[e.joint];
       if (joint.type == JointType::kPrismatic)
         q_open[e.joint] = e.direction_speed > 0 ? joint.lower : joint.upper;
+      else if (opposed && joint.type == JointType::kRevolute)
+        q_open[e.joint] = e.direction_speed > 0
+                              ? std::max(joint.lower, q0[e.joint] - kOpenOpposed_rad)
+                              : std::min(joint.upper, q0[e.joint] + kOpenOpposed_rad);
     }
   if (q_open != q0) {
     hand.preshape = clamp_to_limits(hand, apply_couplings(hand, q_open));
@@ -691,7 +728,9 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     int nonzero = 0;
     for (Eigen::Index j = 0; j < q_open.size(); ++j) nonzero += q_open[j] != 0.0;
     guess("preshape", nonzero ? std::to_string(nonzero) + " joints not at 0" : "all joints 0",
-          0.5, "the URDF's zero configuration clamped to the limits; prismatic jaws open");
+          0.5,
+          std::string("the URDF's zero configuration clamped to the limits; prismatic jaws open") +
+              (opposed ? "; opposed digits open away from where they meet (45° at most)" : ""));
   }
   int mimics = 0;
   for (const Joint& j : hand.joints) mimics += j.mimic.has_value();
@@ -736,7 +775,10 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     if (q_open[j] != 0.0 && hand.joints[j].is_moving() && !hand.joints[j].mimic) {
       if (!any) y << "preshape:\n";
       any = true;
-      y << "  " << quoted(hand.joints[j].name) << ": " << num(q_open[j]) << "\n";
+      // Every digit: a joint limit rounded to 6 digits may lie outside the limits on load.
+      std::ostringstream exact;
+      exact << std::setprecision(17) << q_open[j];
+      y << "  " << quoted(hand.joints[j].name) << ": " << exact.str() << "\n";
     }
   y << "actors:\n";
   for (const Actor& a : hand.actors) {

@@ -1,5 +1,7 @@
 #include "cordgrasp/core/hand_conventions.h"
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "cordgrasp/core/geometry_points.h"
@@ -84,37 +86,73 @@ std::vector<std::string> check_hand_conventions(const HandModel& hand,
     say("thumb tip and fingertips are not on opposite sides of the GCP axis");
   }
 
-  // Actors close towards the GCP.
-  Eigen::Vector3d tips_closed_W = Eigen::Vector3d::Zero();
-  int n_tips = 0;
+  // Actors close towards the GCP: somewhere in its closing sweep each fingertip comes nearer the
+  // GCP axis (a long digit may cross it within closing_step, a short one needs more), or ahead
+  // along it; advanced by closing_step, it is nearer the GCP.
+  struct ClosingTip {
+    Eigen::Vector3d p_W, moved_W;  // advanced by closing_step; its motion
+    std::string name;
+  };
+  std::vector<ClosingTip> closing_tips;
   for (size_t a = 0; a < hand.actors.size(); ++a) {
     const Actor& actor = hand.actors[a];
     const auto X1 = link_poses(hand, advance_actor(hand, actor, q0, params.closing_step));
+    // The sweep: in steps of sweep_step until the actor's revolute joints (their <mimic>
+    // followers included) have turned max_curl_rad in all, or closing_range.
+    double turn_per_unit = 0.0;
+    for (const auto& e : actor.joints) {
+      const Joint& joint = hand.joints[e.joint];
+      if (joint.type != JointType::kPrismatic) turn_per_unit += std::abs(e.direction_speed);
+      for (const Joint& follower : hand.joints)
+        if (follower.mimic && follower.mimic->master_joint == e.joint &&
+            follower.type != JointType::kPrismatic)
+          turn_per_unit += std::abs(follower.mimic->multiplier * e.direction_speed);
+    }
+    const double range = turn_per_unit > 0.0
+                             ? std::min(params.closing_range, params.max_curl_rad / turn_per_unit)
+                             : params.closing_range;
+    const int steps = std::max(1, static_cast<int>(std::ceil(range / params.sweep_step - 1e-9)));
+    std::vector<std::vector<Eigen::Isometry3d>> sweep;
+    for (int k = 1; k <= steps; ++k)
+      sweep.push_back(
+          link_poses(hand, advance_actor(hand, actor, q0, std::min(range, k * params.sweep_step))));
     int n = 0;
     for (const Finger& f : fingers) {
       if (f.actor != static_cast<int>(a) || f.tip_link < 0) continue;
       ++n;
       const Eigen::Vector3d p1_W = X1[f.tip_link] * f.p_tip_L;
-      tips_closed_W += p1_W;
-      ++n_tips;
       const Eigen::Vector3d t0 = X_GW * (X0[f.tip_link] * f.p_tip_L);
       const Eigen::Vector3d t1 = X_GW * p1_W;
-      if (!(t1.head<2>().norm() < t0.head<2>().norm() - params.min_closing_m)) {
+      const std::string tip = "actor " + quoted(actor.name) + ": tip on " +
+                              quoted(hand.links[f.tip_link].name);
+      // Into the grasp: nearer the axis, or ahead along +z and not farther from the axis (a
+      // finger beside the axis at the GCP's height curls past it), or nearer the GCP (a thumb
+      // beside the axis closing towards the palm).
+      double nearer = 0.0, ahead = 0.0, closer = 0.0;
+      for (const auto& X : sweep) {
+        const Eigen::Vector3d t = X_GW * (X[f.tip_link] * f.p_tip_L);
+        const double gain = t0.head<2>().norm() - t.head<2>().norm();
+        nearer = std::max(nearer, gain);
+        closer = std::max(closer, t0.norm() - t.norm());
+        if (gain >= 0.0) ahead = std::max(ahead, t.z() - t0.z());
+      }
+      if (!(nearer >= params.min_closing_m) && !(ahead >= params.min_closing_m) &&
+          !(closer >= params.min_closing_m)) {
         std::ostringstream s;
-        s << "actor " << quoted(actor.name) << ": tip on " << quoted(hand.links[f.tip_link].name)
-          << " does not close towards the GCP axis (" << t0.head<2>().norm() << " -> "
-          << t1.head<2>().norm() << " m)";
+        s << tip << " does not close towards the GCP axis (at best " << nearer * 1e3
+          << " mm nearer it, " << ahead * 1e3 << " mm ahead along it, " << closer * 1e3
+          << " mm nearer the GCP)";
         say(s.str());
       }
-      if (!(t1.norm() < t0.norm()))
-        say("actor " + quoted(actor.name) + ": tip on " + quoted(hand.links[f.tip_link].name) +
-            " moves away from the GCP");
+      closing_tips.push_back({p1_W, p1_W - X0[f.tip_link] * f.p_tip_L, tip});
+      if (!(t1.norm() < t0.norm())) say(tip + " moves away from the GCP");
     }
     if (n == 0) say("actor " + quoted(actor.name) + " moves no geometry");
   }
 
-  // The palm normal points from the palm towards the closing region.
-  if (hand.palm_normal && has_palm && n_tips > 0) {
+  // The palm normal points from the palm towards the closing region: the GCP lies in front of
+  // the palm, and no fingertip closes backwards to behind it.
+  if (hand.palm_normal && has_palm) {
     const PalmNormal& pn = *hand.palm_normal;
     if (pn.link < 0 || pn.link >= static_cast<int>(hand.links.size())) {
       say("palm normal on a link the hand does not have");
@@ -122,13 +160,15 @@ std::vector<std::string> check_hand_conventions(const HandModel& hand,
       const Eigen::Vector3d n_W = X0[pn.link].linear() * pn.n_L;
       if (std::abs(n_W.norm() - 1.0) > 1e-9) say("palm normal is not a unit vector");
       const double gcp_height = (X_WG.translation() - palm_W).dot(n_W);
-      const double tips_height = (tips_closed_W / n_tips - palm_W).dot(n_W);
       if (!(gcp_height > 0.0))
         say("palm normal: the GCP is not in front of the palm (" + std::to_string(gcp_height) +
             " m along it)");
-      if (!(tips_height > 0.0))
-        say("palm normal: the closing fingertips are not in front of the palm (" +
-            std::to_string(tips_height) + " m along it)");
+      for (const ClosingTip& t : closing_tips) {
+        const double height = (t.p_W - palm_W).dot(n_W);
+        if (!(height > 0.0) && !(t.moved_W.dot(n_W) > 0.0))
+          say("palm normal: " + t.name + " closes backwards to behind the palm (" +
+              std::to_string(height) + " m along it)");
+      }
     }
   }
   return problems;
