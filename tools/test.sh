@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Installs missing Debian packages, configures, builds (Release, -j2) and runs the whole ctest
 # suite, then the sanitizer pass: an ASan + UBSan build (RelWithDebInfo, build-asan/) running
-# the labels unit, physics and robustness but not dataset. A sanitizer report fails the run.
+# the labels unit, physics and robustness but not dataset. With clang (install-deps installs
+# it) that build is clang's, with the parsers' libFuzzer targets (CORDGRASP_FUZZ), and also runs
+# the label fuzz: each target fuzzes from its seed corpus for a fixed number of inputs. Without
+# clang it is GCC's, without fuzzing. A sanitizer report or a fuzzing finding fails the run.
 # Usage: tools/test.sh [--sanitize | --no-sanitize] [extra ctest args, e.g. -L unit]
 #   --sanitize      only the sanitizer pass
 #   --no-sanitize   only the Release suite (a quick local run)
@@ -26,16 +29,30 @@ launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 
 sanitizer_pass() {
-  echo "test.sh: sanitizer pass (ASan + UBSan, $asan_build): labels unit, physics, robustness" \
+  local compiler=() labels='unit|physics|robustness' what="GCC's"
+  if command -v clang++ >/dev/null; then
+    # clang compiles the sanitized build in about half GCC's CPU time and brings libFuzzer.
+    compiler=(-DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCORDGRASP_FUZZ=ON)
+    labels='unit|physics|robustness|fuzz'
+    what="clang's, with the fuzz targets"
+  fi
+  echo "test.sh: sanitizer pass (ASan + UBSan, $what, $asan_build): labels $labels" \
        "without dataset (the shipped hands and objects run the same code)" >&2
+  if [[ -f "$asan_build/CMakeCache.txt" ]] &&
+     ! grep -q "CORDGRASP_FUZZ:BOOL=$([[ ${#compiler[@]} -gt 0 ]] && echo ON || echo OFF)" \
+          "$asan_build/CMakeCache.txt"; then
+    rm -rf "$asan_build"  # configured with the other compiler: start again
+  fi
   cmake -S "$root" -B "$asan_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCORDGRASP_SANITIZE=ON \
-      -DCORDGRASP_BUILD_BENCH=OFF -DCORDGRASP_BUILD_PYTHON=OFF "${launcher[@]}" >/dev/null
+      -DCORDGRASP_BUILD_BENCH=OFF -DCORDGRASP_BUILD_PYTHON=OFF "${compiler[@]}" "${launcher[@]}" \
+      >/dev/null
   cmake --build "$asan_build" -j2
-  # Leaks are not checked: Bullet's and OSMesa's process-lifetime allocations would drown them.
+  # Leaks are not checked: Bullet's and OSMesa's process-lifetime allocations would drown them
+  # (the fuzz tests check them, with tests/fuzz/lsan.supp).
   (cd "$asan_build" &&
    ASAN_OPTIONS="detect_leaks=0:abort_on_error=0:halt_on_error=1" \
    UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
-   ctest --output-on-failure -j2 -L 'unit|physics|robustness' -LE dataset "$@")
+   ctest --output-on-failure -j2 -L "$labels" -LE dataset "$@")
 }
 
 "$root/tools/install-deps.sh"
