@@ -61,6 +61,16 @@ void check_hold_probability_params(const HoldProbabilityParams& p) {
                                 " is not in [1, max_draws " + std::to_string(p.max_draws) + "]");
 }
 
+HoldProbabilityParams hold_test_params(double min_hold_probability, int max_draws,
+                                       std::uint64_t seed) {
+  HoldProbabilityParams out;
+  out.min_hold_probability = min_hold_probability;
+  out.max_draws = max_draws;
+  out.min_draws = std::min(out.min_draws, max_draws);
+  out.seed = seed;
+  return out;
+}
+
 HoldVerdict hold_verdict(const ProportionInterval& interval, double threshold) {
   if (interval.low > threshold) return HoldVerdict::kAbove;
   if (interval.high < threshold) return HoldVerdict::kBelow;

@@ -153,11 +153,8 @@ ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, Pla
                                 std::to_string(v.trials) + "], got " +
                                 std::to_string(v.min_held));
   const bool uncertain = !is_none(v.uncertainty);
-  HoldProbabilityParams hold_test;
-  hold_test.min_hold_probability = v.min_hold_probability;
-  hold_test.max_draws = v.max_draws;
-  hold_test.min_draws = std::min(hold_test.min_draws, v.max_draws);
-  hold_test.seed = v.trial_seed;
+  const HoldProbabilityParams hold_test =
+      hold_test_params(v.min_hold_probability, v.max_draws, v.trial_seed);
   if (uncertain) {
     check_uncertainty_params(v.uncertainty);
     check_hold_probability_params(hold_test);

@@ -69,11 +69,8 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   SimParams params = physics_for_plan(opt, plan);  // settings errors before the mesh is read
   const UncertaintyParams uncertainty = uncertainty_settings(opt.uncertainty);
   const bool uncertain = !is_none(uncertainty);
-  HoldProbabilityParams hold_test;
-  hold_test.min_hold_probability = opt.min_hold_probability;
-  hold_test.max_draws = opt.trials;
-  hold_test.min_draws = std::min(hold_test.min_draws, opt.trials);
-  hold_test.seed = opt.seed;
+  const HoldProbabilityParams hold_test =
+      hold_test_params(opt.min_hold_probability, opt.trials, opt.seed);
   if (uncertain) {
     try {
       check_hold_probability_params(hold_test);

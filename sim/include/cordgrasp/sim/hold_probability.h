@@ -38,6 +38,11 @@ struct HoldProbabilityParams {
 /// @throws std::invalid_argument naming the field.
 void check_hold_probability_params(const HoldProbabilityParams& params);
 
+/// The sequential test at `min_hold_probability`, with at most `max_draws` draws from `seed`
+/// (min_draws lowered to max_draws when fewer draws are allowed than its default).
+HoldProbabilityParams hold_test_params(double min_hold_probability, int max_draws,
+                                       std::uint64_t seed);
+
 /// Where the 95 % interval lies against the threshold.
 enum class HoldVerdict {
   kUndecided,  ///< the interval contains the threshold
