@@ -177,6 +177,11 @@ TEST(BenchCsv, RowsRoundTripIncludingQuotedErrors) {
   ok.validated_accepted = 3;
   ok.validated_candidates = 9;
   ok.validated_first_accepted_cpu_s = 2.5;
+  ok.hold_p = 0.75;
+  ok.hold_low = 0.5;
+  ok.hold_high = 0.9;
+  ok.hold_draws = 8;
+  ok.hold_cpu_s = 1.25;
   BenchRow bad;
   bad.attempt = 4;
   bad.object = "bad";
@@ -190,7 +195,7 @@ TEST(BenchCsv, RowsRoundTripIncludingQuotedErrors) {
             "region_rank,sim_lift,sim_shake,sim_gravity6,sim_outcome,sim_wall_s,object_scale,"
             "validated_accepted,validated_candidates,validated_simulated,"
             "validated_rejected_early,validated_held_as_planned,validated_first_accepted_cpu_s,"
-            "validated_cpu_s");
+            "validated_cpu_s,hold_p,hold_low,hold_high,hold_draws,hold_cpu_s");
   const auto rows = parse_bench_csv(text, "test");
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(bench_row_cells(rows[0]), bench_row_cells(ok));
@@ -198,6 +203,8 @@ TEST(BenchCsv, RowsRoundTripIncludingQuotedErrors) {
   EXPECT_EQ(rows[1].error, bad.error);
   EXPECT_FALSE(rows[1].first_fc_s.has_value());
   EXPECT_FALSE(rows[1].region_rank.has_value());
+  EXPECT_EQ(rows[0].hold_draws, 8);
+  EXPECT_FALSE(rows[1].hold_p.has_value());
 }
 
 TEST(BenchCsv, ParseRejectsAnotherHeaderAndShortRows) {
@@ -208,7 +215,8 @@ TEST(BenchCsv, ParseRejectsAnotherHeaderAndShortRows) {
 }
 
 TEST(BenchCsv, AFileWithoutTheNewerColumnsReadsWithTheirDefaults) {
-  // results.csv from before alpha_approach_rad, object_scale and validated_* (28 columns).
+  // results.csv from before alpha_approach_rad, object_scale, validated_* and hold_*
+  // (28 columns).
   BenchRow row;
   row.attempt = 2;
   row.object = "mug";
@@ -217,11 +225,12 @@ TEST(BenchCsv, AFileWithoutTheNewerColumnsReadsWithTheirDefaults) {
   row.alpha_approach_rad = 0.5;
   row.object_scale = 2.0;
   row.validated_accepted = 3;
+  row.hold_p = 0.5;
   const std::vector<std::string> names = bench_csv_columns(), cells = bench_row_cells(row);
   std::string header, line;
   for (size_t i = 0; i < names.size(); ++i) {
     if (names[i] == "alpha_approach_rad" || names[i] == "object_scale" ||
-        names[i].rfind("validated_", 0) == 0)
+        names[i].rfind("validated_", 0) == 0 || names[i].rfind("hold_", 0) == 0)
       continue;
     header += (header.empty() ? "" : ",") + names[i];
     line += (line.empty() ? "" : ",") + cells[i];
@@ -233,6 +242,7 @@ TEST(BenchCsv, AFileWithoutTheNewerColumnsReadsWithTheirDefaults) {
   EXPECT_FALSE(rows[0].alpha_approach_rad.has_value());
   EXPECT_EQ(rows[0].object_scale, 1.0);
   EXPECT_FALSE(rows[0].validated_accepted.has_value());
+  EXPECT_FALSE(rows[0].hold_p.has_value());
   // A required column missing, or an unknown one, is refused.
   EXPECT_THROW(parse_bench_csv(header.substr(header.find(',') + 1) + "\n", "x"), InputError);
   EXPECT_THROW(parse_bench_csv(header + ",extra\n", "x"), InputError);
@@ -266,6 +276,8 @@ TEST(BenchSummary, CountsSuccessAndHoldRatePerGroup) {
   rows[1].first_fc_s = 3.0;
   rows[1].alpha_rad = 0.4;
   rows[1].sim_outcome = "dropped";
+  rows[0].hold_p = 0.9;
+  rows[1].hold_p = 0.4;
   rows[2].status = "error";
   rows[2].error = "boom";
   BenchSummaryInfo info;
@@ -276,7 +288,7 @@ TEST(BenchSummary, CountsSuccessAndHoldRatePerGroup) {
             std::string::npos)
       << md;
   EXPECT_NE(md.find("| 0.300 | 0.141 |"), std::string::npos) << md;  // α mean, sd
-  EXPECT_NE(md.find("1/2 (50 %)"), std::string::npos) << md;         // sim held
+  EXPECT_NE(md.find("1/2 (50 %) | 0.65 |"), std::string::npos) << md;  // sim held, P(held)
   EXPECT_NE(md.find("| h | cord | 3 |"), std::string::npos) << md;   // totals
   EXPECT_NE(md.find("boom"), std::string::npos) << md;
 }
@@ -437,6 +449,46 @@ TEST(CliBench, OneAndTwoJobsGiveTheSameRowsAndShardsMergeToThem) {
   r = test::run_cordgrasp("merge " + quoted(s1) + " --allow-missing --out-dir " + quoted(again));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   for (const auto& d : {j1, j2, s1, s2, merged, again}) fs::remove_all(d);
+}
+
+// bench --uncertainty: each simulated first grasp gets its P(held), decided by the sequential
+// test (≥ 5 draws, ≤ validation.max_draws = 20; a threshold of 0.5 decides most grasps in 5),
+// the same with one or two threads.
+TEST(CliBench, UncertaintyGivesEachFirstGraspItsHoldProbability) {
+  constexpr int kMinDraws = 5, kMaxDraws = 20;
+  const std::string j1 = temp_dir("hold1"), j2 = temp_dir("hold2");
+  const std::string args = " --objects " + quoted(shipped_object("box")) +
+                           " --hands cordgrasp_sah --planners cord,generic --repeats 1 "
+                           "--time-limit 20 --tests lift --uncertainty realistic "
+                           "--min-hold-probability 0.5 --no-sheets "
+                           "--quiet --out-dir ";
+  auto r = test::run_cordgrasp("bench" + args + quoted(j1) + " --jobs 1");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = test::run_cordgrasp("bench" + args + quoted(j2) + " --jobs 2");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto rows = read_rows(j1);
+  ASSERT_EQ(rows.size(), 2u);
+  for (const BenchRow& row : rows) {
+    ASSERT_EQ(row.status, "ok") << row.error;
+    ASSERT_TRUE(row.hold_p && row.hold_low && row.hold_high && row.hold_draws && row.hold_cpu_s);
+    EXPECT_LE(*row.hold_low, *row.hold_p);
+    EXPECT_LE(*row.hold_p, *row.hold_high);
+    EXPECT_GE(*row.hold_draws, kMinDraws);
+    EXPECT_LE(*row.hold_draws, kMaxDraws);
+    EXPECT_GT(*row.hold_cpu_s, 0.0);
+  }
+  EXPECT_EQ(rows_without_timings(read_rows(j2)), rows_without_timings(rows));
+  const auto meta = nlohmann::json::parse(read_file(j1 + "/bench.json"));
+  EXPECT_TRUE(meta["parameters"]["uncertainty"].is_object()) << meta.dump();
+  EXPECT_NE(read_file(j1 + "/summary.md").find("P(held) median"), std::string::npos);
+  // Without --uncertainty the columns stay empty.
+  const std::string none = temp_dir("hold_none");
+  r = test::run_cordgrasp("bench --objects " + quoted(shipped_object("box")) +
+                          " --hands cordgrasp_sah --planners cord --tests lift --no-sheets "
+                          "--quiet --out-dir " + quoted(none));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_FALSE(read_rows(none).at(0).hold_p.has_value());
+  for (const auto& d : {j1, j2, none}) fs::remove_all(d);
 }
 
 TEST(CliBench, BadMeshIsAnErrorRowAndTheBenchExitsZero) {

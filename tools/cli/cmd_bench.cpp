@@ -101,6 +101,8 @@ void add_bench_command(CLI::App& app) {
   cmd->add_flag("--validate", opt->bench.validate,
                 "Validated planning per attempt (plan --validate); adds the validated_* columns");
   add_validation_options(cmd, opt->bench.validation);
+  add_uncertainty_options(cmd, opt->bench.validation,
+                          "Each simulated first grasp's P(held) (hold_* columns)");
   cmd->add_flag("--no-sheets", opt->bench.no_sheets, "No contact sheet PNGs");
   cmd->add_option("--sheet-size", opt->bench.sheet_size, "Contact sheet tile size WxH [px]")
       ->capture_default_str();

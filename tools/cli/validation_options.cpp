@@ -53,15 +53,18 @@ void add_validation_options(CLI::App* cmd, ValidationParams& v) {
       ->capture_default_str();
 }
 
-void add_uncertainty_options(CLI::App* cmd, ValidationParams& v) {
+void add_uncertainty_options(CLI::App* cmd, ValidationParams& v, const char* use) {
+  const std::string model =
+      "P(held) under uncertain hand pose, friction, mass, centre of mass and grip force (none, "
+      "realistic, or a JSON/YAML file of their spreads; docs/physics.md §3b)";
+  const std::string accept =
+      "Validated planning: accept a candidate held as planned when its " + model +
+      " is decided above --min-hold-probability within the settings' validation.max_draws "
+      "draws; rank the accepted grasps by it (default: none, the nudged trials)";
   cmd->add_option_function<std::string>(
          "--uncertainty",
          [&v](const std::string& choice) { v.uncertainty = uncertainty_settings(choice); },
-         "Validated planning: accept a candidate held as planned when its P(held) under "
-         "uncertain hand pose, friction, mass, centre of mass and grip force (none, realistic, "
-         "or a JSON/YAML file of their spreads; docs/physics.md §3b) is decided above "
-         "--min-hold-probability within the settings' validation.max_draws draws; rank the "
-         "accepted grasps by it (default: none, the nudged trials)");
+         use ? std::string(use) + ": " + model + ". " + accept : accept);
   cmd->add_option("--min-hold-probability", v.min_hold_probability,
                   "Acceptance threshold of P(held) with --uncertainty")
       ->check(settings_number("validation.min_hold_probability"))

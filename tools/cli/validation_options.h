@@ -23,8 +23,9 @@ void add_trial_nudge_options(CLI::App* cmd, PerturbationParams& p);
 void add_validation_options(CLI::App* cmd, ValidationParams& v);
 
 /// Adds --uncertainty (none, realistic or a file: uncertainty_settings) and
-/// --min-hold-probability of the P(held) test of validated planning, bound to `v`.
-void add_uncertainty_options(CLI::App* cmd, ValidationParams& v);
+/// --min-hold-probability of the P(held) test of validated planning, bound to `v`; `use`
+/// (when given) replaces the first sentence of --uncertainty's help.
+void add_uncertainty_options(CLI::App* cmd, ValidationParams& v, const char* use = nullptr);
 
 /// Adds --validate [PROTOCOL]: sets *validate, and *protocol when a protocol is named.
 void add_validate_option(CLI::App* cmd, bool* validate, Protocol* protocol);

@@ -156,7 +156,7 @@ Stats stats_of(std::vector<double> v) {
 // The summary cells of one group of rows (summary_columns()).
 std::vector<std::string> summary_cells(const std::vector<const BenchRow*>& rows) {
   int ok = 0, no_grasp = 0, error = 0, simulated = 0, held = 0;
-  std::vector<double> first_fc, total, alpha, alpha_approach, epsilon, processed;
+  std::vector<double> first_fc, total, alpha, alpha_approach, epsilon, processed, hold_p;
   for (const BenchRow* r : rows) {
     ok += r->status == "ok";
     no_grasp += r->status == "no_grasp";
@@ -169,6 +169,7 @@ std::vector<std::string> summary_cells(const std::vector<const BenchRow*>& rows)
       if (r->region_rank) processed.push_back(r->regions_processed);
     }
     if (r->status != "error") total.push_back(r->total_s);
+    if (r->hold_p) hold_p.push_back(*r->hold_p);
     if (!r->sim_outcome.empty()) {
       ++simulated;
       held += r->sim_outcome == "held";
@@ -176,7 +177,7 @@ std::vector<std::string> summary_cells(const std::vector<const BenchRow*>& rows)
   }
   const int n = static_cast<int>(rows.size());
   const Stats t = stats_of(first_fc), a = stats_of(alpha), e = stats_of(epsilon),
-              tt = stats_of(total), aa = stats_of(alpha_approach);
+              tt = stats_of(total), aa = stats_of(alpha_approach), h = stats_of(hold_p);
   auto or_dash = [](bool have, const std::string& s) { return have ? s : std::string("–"); };
   return {std::to_string(n),
           std::to_string(ok) + " (" + fixed(n ? 100.0 * ok / n : 0.0, 0) + " %)",
@@ -193,7 +194,8 @@ std::vector<std::string> summary_cells(const std::vector<const BenchRow*>& rows)
           or_dash(e.n > 0, format_number(e.mean, "%.3g")),
           or_dash(simulated > 0, std::to_string(held) + "/" + std::to_string(simulated) + " (" +
                                      fixed(simulated ? 100.0 * held / simulated : 0.0, 0) +
-                                     " %)")};
+                                     " %)"),
+          or_dash(h.n > 0, fixed(h.median, 2))};
 }
 
 // Column names of summary_cells(), in order.
@@ -201,7 +203,7 @@ const std::vector<std::string>& summary_columns() {
   static const std::vector<std::string> kColumns = {
       "attempts", "FC grasp found", "no grasp", "error", "first FC median [s]",
       "first FC mean [s]", "first FC sd [s]", "total mean [s]", "α mean [rad]", "α sd [rad]",
-      "α approach mean [rad]", "α approach sd [rad]", "ε mean", "sim held"};
+      "α approach mean [rad]", "α approach sd [rad]", "ε mean", "sim held", "P(held) median"};
   return kColumns;
 }
 
@@ -400,7 +402,12 @@ const std::vector<BenchColumn>& bench_columns() {
         optional_whole_column("validated_held_as_planned", &R::validated_held_as_planned, true),
         optional_column("validated_first_accepted_cpu_s", &R::validated_first_accepted_cpu_s,
                         true, true),
-        optional_column("validated_cpu_s", &R::validated_cpu_s, true, true)};
+        optional_column("validated_cpu_s", &R::validated_cpu_s, true, true),
+        optional_column("hold_p", &R::hold_p, false, true),
+        optional_column("hold_low", &R::hold_low, false, true),
+        optional_column("hold_high", &R::hold_high, false, true),
+        optional_whole_column("hold_draws", &R::hold_draws, true),
+        optional_column("hold_cpu_s", &R::hold_cpu_s, true, true)};
     return c;
   }();
   return kColumns;
@@ -420,7 +427,7 @@ const std::vector<std::string>& bench_csv_columns() {
 const std::vector<std::string>& bench_timing_columns() {
   static const std::vector<std::string> kTiming = {
       "first_fc_s", "exploration_s", "finger_s", "quality_s", "total_s", "sim_wall_s",
-      "validated_first_accepted_cpu_s", "validated_cpu_s"};
+      "validated_first_accepted_cpu_s", "validated_cpu_s", "hold_cpu_s"};
   return kTiming;
 }
 
@@ -595,6 +602,20 @@ BenchResult run_bench_attempt(const BenchAttempt& attempt, const BenchParams& pa
       result.interrupted = true;
       return result;
     }
+    if (!doc.results.empty() && !is_none(params.uncertainty)) {
+      const HoldProbability h = estimate_hold_probability(
+          *mesh, *hand, plan.grasps.front(), 0, doc.params, doc.tests, params.uncertainty,
+          params.hold_test, cancel);
+      if (!h.complete) {
+        result.interrupted = true;
+        return result;
+      }
+      row.hold_p = h.interval.p;
+      row.hold_low = h.interval.low;
+      row.hold_high = h.interval.high;
+      row.hold_draws = static_cast<int>(h.draws.size());
+      row.hold_cpu_s = h.cpu_s;
+    }
     if (!doc.results.empty()) {
       const SimResult& r = doc.results.front();
       auto phase = [&](const char* name) {
@@ -654,7 +675,11 @@ nlohmann::json bench_params_to_json(const BenchParams& p) {
           {"seed", p.seed},
           {"job", job},
           {"tests", p.tests},
-          {"protocol", to_string(p.protocol)}};
+          {"protocol", to_string(p.protocol)},
+          {"uncertainty", is_none(p.uncertainty) ? nlohmann::json(nullptr)
+                                                 : params_to_json(p.uncertainty)},
+          {"hold_test", is_none(p.uncertainty) ? nlohmann::json(nullptr)
+                                               : params_to_json(p.hold_test)}};
 }
 
 std::vector<BenchRow> merge_bench_rows(const std::vector<std::vector<BenchRow>>& parts) {

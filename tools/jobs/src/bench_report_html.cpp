@@ -86,7 +86,8 @@ std::string bench_report_html(const std::vector<BenchRow>& rows, const BenchSumm
   html << "<p class=\"note\">Times are wall-clock seconds. α: skewness (docs/algorithm.md §9; "
           "of the palm normal, α approach of the GCP z axis) and ε of the first force-closure "
           "grasp; first FC, α and ε over the attempts that found a grasp; sim held: first "
-          "grasps that held through every test / first grasps simulated. The plots: the share "
+          "grasps that held through every test / first grasps simulated; P(held) median: of the "
+          "first grasps' P(held) under --uncertainty (docs/physics.md §3b). The plots: the share "
           "of all attempts that had found a force-closure grasp by a time; the dashed line is "
           "the share that found one at all.</p>\n";
   html << "<h2>Per object, hand and planner</h2>\n";

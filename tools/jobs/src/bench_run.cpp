@@ -125,6 +125,18 @@ BenchRunOutcome run_bench(const BenchRunParams& opt, const BenchRunCallbacks& cb
   params.sim_cache_dir = opt.cache_dir;
   params.physics_file = opt.validation.physics_file;  // --physics, validated or not
   if (opt.validate) params.validation = opt.validation;
+  params.uncertainty = opt.validation.uncertainty;
+  params.hold_test = hold_test_params(opt.validation.min_hold_probability,
+                                      opt.validation.max_draws, opt.validation.trial_seed);
+  if (!is_none(params.uncertainty)) {
+    try {
+      check_uncertainty_params(params.uncertainty);
+      check_hold_probability_params(params.hold_test);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(std::string("bench: --uncertainty / --min-hold-probability: ") +
+                       e.what());
+    }
+  }
   params.hand_load = opt.hand_load;
   if (params.tests != "none") (void)sim_tests_from_string(params.tests);  // fail early
   const auto [shard_k, shard_n] = opt.shard.empty() ? std::pair{1, 1} : parse_shard(opt.shard);

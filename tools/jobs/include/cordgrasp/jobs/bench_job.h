@@ -21,7 +21,9 @@
 #include "cordgrasp/core/hand_model.h"
 #include "cordgrasp/core/mesh.h"
 #include "cordgrasp/jobs/plan_job.h"
+#include "cordgrasp/sim/grasp_uncertainty.h"
 #include "cordgrasp/sim/grasp_validation.h"
+#include "cordgrasp/sim/hold_probability.h"
 #include "cordgrasp/sim/sim_params.h"
 
 namespace cordgrasp {
@@ -41,6 +43,10 @@ struct BenchParams {
   /// Set: each attempt plans with validated_plan_job (its tests and protocol: from above)
   /// and fills the validated_* columns.
   std::optional<ValidationParams> validation;
+  /// Not none: each simulated first grasp also gets its P(held) under this model
+  /// (estimate_hold_probability with hold_test; the hold_* columns).
+  UncertaintyParams uncertainty = uncertainty_none();
+  HoldProbabilityParams hold_test;    ///< the sequential test of that P(held)
   HandLoadOptions hand_load;          ///< package:// directories of the hands' URDFs
 };
 
@@ -104,6 +110,11 @@ struct BenchRow {
   std::optional<int> validated_accepted, validated_candidates, validated_simulated,
       validated_rejected_early, validated_held_as_planned;
   std::optional<double> validated_first_accepted_cpu_s, validated_cpu_s;
+  /// P(held) of the first grasp under BenchParams::uncertainty (unset without it): the
+  /// estimate, its Wilson 95 % interval, the draws it took and their CPU time [s].
+  std::optional<double> hold_p, hold_low, hold_high;
+  std::optional<int> hold_draws;
+  std::optional<double> hold_cpu_s;
 };
 
 /// Column names of results.csv, in order.
