@@ -58,12 +58,16 @@ start=$(date +%s)
 
 # Fig. 11: alpha and exploration time against the number of sets, with / without local
 # improvement, on the long cylinder (the shipped one: 35 mm x 250 mm), Schunk SAH.
+# Each setting is a planner settings file (docs/algorithm.md §10c) in OUT/settings.
+mkdir -p "$OUT/settings"
 for sets in 5 10 20 40; do
-  bench "fig11_sets${sets}_li" --hands schunk_sah --objects "$SHIPPED/long_cylinder.obj" \
-    --planners cord --repeats "$FIG11_RUNS" --sets "$sets" --tests none --no-sheets
-  bench "fig11_sets${sets}_noli" --hands schunk_sah --objects "$SHIPPED/long_cylinder.obj" \
-    --planners cord --repeats "$FIG11_RUNS" --sets "$sets" --no-local-improvement \
-    --tests none --no-sheets
+  echo "cord: {sets: $sets}" > "$OUT/settings/sets${sets}_li.yaml"
+  echo "cord: {sets: $sets, local_improvement: false}" > "$OUT/settings/sets${sets}_noli.yaml"
+  for li in li noli; do
+    bench "fig11_sets${sets}_$li" --hands schunk_sah --objects "$SHIPPED/long_cylinder.obj" \
+      --planners cord --repeats "$FIG11_RUNS" --settings "$OUT/settings/sets${sets}_$li.yaml" \
+      --tests none --no-sheets
+  done
 done
 
 # Fig. 12: cord (10 attempts) vs generic (10 attempts at each of three time budgets), and

@@ -491,6 +491,38 @@ TEST(CliBench, UncertaintyGivesEachFirstGraspItsHoldProbability) {
   for (const auto& d : {j1, j2, none}) fs::remove_all(d);
 }
 
+// bench takes the planner's settings from a settings file, as plan does: a row is repeated by
+// `plan --settings FILE --seed <seed>`; the planner's tuning flags are not options of bench.
+TEST(CliBench, SettingsFileTunesThePlannerAsForPlan) {
+  const std::string dir = temp_dir("settings"), out = dir + "/out";
+  const std::string settings = dir + "/few_sets.yaml";
+  std::ofstream(settings) << "cord: {sets: 3, local_improvement: false}\nmax_attempts: 40\n";
+  auto r = test::run_cordgrasp("bench --objects " + quoted(shipped_object("box")) +
+                               " --hands cordgrasp_sah --planners cord --repeats 1 --seed 4 "
+                               "--tests none --no-sheets --quiet --settings " + quoted(settings) +
+                               " --out-dir " + quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto meta = nlohmann::json::parse(read_file(out + "/bench.json"));
+  EXPECT_EQ(meta["parameters"]["job"]["cord"]["sets"], 3) << meta.dump();
+  EXPECT_EQ(meta["parameters"]["job"]["cord"]["local_improvement"], false);
+  EXPECT_EQ(meta["parameters"]["job"]["plan"]["max_attempts"], 40);
+  const BenchRow row = read_rows(out).at(0);
+  ASSERT_EQ(row.status, "ok") << row.error;
+  EXPECT_LE(row.finger_attempts, 40);
+  r = test::run_cordgrasp("plan --object " + quoted(shipped_object("box")) + " --seed 4 " +
+                          "--settings " + quoted(settings) + " -q --out " +
+                          quoted(dir + "/plan.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto plan = nlohmann::json::parse(read_file(dir + "/plan.json"));
+  EXPECT_EQ(plan["stats"]["attempts"], row.finger_attempts);
+  EXPECT_NEAR(plan["grasps"][0]["epsilon"].get<double>(), *row.epsilon, 1e-6 * *row.epsilon);
+  r = test::run_cordgrasp("bench --objects " + quoted(shipped_object("box")) +
+                          " --hands cordgrasp_sah --sets 3 --tests none --out-dir " +
+                          quoted(dir + "/refused"));
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  fs::remove_all(dir);
+}
+
 TEST(CliBench, BadMeshIsAnErrorRowAndTheBenchExitsZero) {
   const std::string dir = temp_dir("bad"), out = dir + "/out";
   const std::string bad = dir + "/broken.obj";

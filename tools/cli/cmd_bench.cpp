@@ -84,7 +84,10 @@ void add_bench_command(CLI::App& app) {
       ->check(whole_number_in(1, 100000))
       ->capture_default_str();
   add_plan_job_options(cmd, opt->bench.job);
-  add_planner_tuning_options(cmd, opt->bench.job);
+  add_units_option(cmd, opt->bench.job);
+  add_scale_option(cmd, &opt->bench.job.scale);
+  add_time_limit_option(cmd, opt->bench.job);
+  add_plan_settings_option(cmd, opt->bench.job, opt->bench.validation);
   cmd->add_option("--tests", opt->bench.tests,
                   "Physics tests on each attempt's first grasp: lift,shake,gravity6 subset, or "
                   "none")
@@ -100,7 +103,7 @@ void add_bench_command(CLI::App& app) {
                   "k/N: run only attempts whose index mod N = k-1 (join with cordgrasp merge)");
   cmd->add_flag("--validate", opt->bench.validate,
                 "Validated planning per attempt (plan --validate); adds the validated_* columns");
-  add_validation_options(cmd, opt->bench.validation);
+  cmd->add_option("--physics", opt->bench.validation.physics_file, kPhysicsHelp);
   add_uncertainty_options(cmd, opt->bench.validation,
                           "Each simulated first grasp's P(held) (hold_* columns)");
   cmd->add_flag("--no-sheets", opt->bench.no_sheets, "No contact sheet PNGs");

@@ -163,49 +163,12 @@ void add_units_option(CLI::App* cmd, PlanJobParams& p) {
   add_enum_option(cmd, "--units", &p.units, "Units of the object file: m, mm or auto");
 }
 
-void add_planner_tuning_options(CLI::App* cmd, PlanJobParams& p) {
-  DiversityParams& d = p.plan.diversity;
-  cmd->add_option("--min-gcp-distance", d.min_gcp_distance_m,
-                  "Grasps differ pairwise: GCPs at least this far apart [m]...")
-      ->check(settings_number("diversity.min_gcp_distance_m"))
-      ->capture_default_str();
-  cmd->add_option("--min-gcp-distance-per-radius", d.min_gcp_distance_per_radius,
-                  "...or this fraction of the object's bounding radius, if more...")
-      ->check(settings_number("diversity.min_gcp_distance_per_radius"))
-      ->capture_default_str();
-  cmd->add_option("--min-hand-turn", d.min_hand_turn_deg,
-                  "...or hand orientations at least this far apart [deg] (all 0: no rule)")
-      ->check(settings_number("diversity.min_hand_turn_deg"))
-      ->capture_default_str();
-  cmd->add_option("--max-attempts", p.plan.max_attempts,
-                  "Stop after this many finger-stage attempts: the stopping rule, the same on "
-                  "every machine")
-      ->check(settings_whole_number("max_attempts"))
-      ->capture_default_str();
+void add_time_limit_option(CLI::App* cmd, PlanJobParams& p) {
   cmd->add_option("--time-limit", p.plan.time_limit_s,
                   "Safety net: wall-clock limit of the plan [s]; when it fires, the result "
                   "depends on the machine's speed (timed_out in plan.json and results.csv)")
       ->check(settings_number("time_limit_s"))
       ->capture_default_str();
-  cmd->add_option("--soft-finger-radius", p.soft_finger_radius_m,
-                  "Contact patch radius for torsional friction [m]; 0 = point contacts "
-                  "(default: the hand's soft_finger_radius_m, 5 mm for the grippers)")
-      ->check(settings_number("quality.contact.soft_finger_radius_m"));
-  add_enum_option(cmd, "--side-cords", &p.cord.side_cord_policy,
-                  "Cord: a scanned cord that fails: fallback (the paper's discard where the "
-                  "object allows it, else empty), discard, empty (missed cords score as empty "
-                  "polygons) or shrink (docs/algorithm.md §4)");
-  add_enum_option(cmd, "--quality", &p.plan.quality.mode,
-                  "textbook (real mu, eps = origin to hull) or simox (compat quirks, "
-                  "docs/algorithm.md §8)");
-  add_units_option(cmd, p);
-  add_scale_option(cmd, &p.scale);
-  cmd->add_option("--sets", p.cord.sets, "Cord: valid sets to sample before local improvement")
-      ->check(settings_whole_number("cord.sets"))
-      ->capture_default_str();
-  cmd->add_flag_callback(
-      "--no-local-improvement", [&p]() { p.cord.local_improvement = false; },
-      "Cord: skip the local improvement of the sampled sets");
 }
 
 void add_plan_settings_option(CLI::App* cmd, PlanJobParams& p, ValidationParams& v) {

@@ -78,11 +78,9 @@ void add_plan_job_options(CLI::App* cmd, PlanJobParams& p);
 /// Adds --units (m, mm or auto), bound to p.units.
 void add_units_option(CLI::App* cmd, PlanJobParams& p);
 
-/// Adds the planner's other settings as options (bench only; plan and run take them from a
-/// --settings file): --min-gcp-distance(-per-radius), --min-hand-turn, --max-attempts,
-/// --time-limit, --soft-finger-radius, --side-cords, --quality, --units, --scale, --sets,
-/// --no-local-improvement.
-void add_planner_tuning_options(CLI::App* cmd, PlanJobParams& p);
+/// Adds --time-limit (the plan's wall-clock safety net, also the generic baseline's budget in
+/// comparisons) bound to p.plan.time_limit_s (bench; plan and run take it from --settings).
+void add_time_limit_option(CLI::App* cmd, PlanJobParams& p);
 
 /// Adds --settings FILE (merge_plan_settings_file into `p` and `v`), merged while the command
 /// line is read, so that the options given with it win.

@@ -7,51 +7,9 @@
 
 namespace cordgrasp::cli {
 
-void add_trial_nudge_options(CLI::App* cmd, PerturbationParams& p) {
-  cmd->add_option("--trial-offset", p.offset_m,
-                  "Hand offset of the nudged trials (all but the first) [m], random direction")
-      ->check(settings_number("validation.perturbation.offset_m"))
-      ->capture_default_str();
-  cmd->add_option("--trial-turn", p.turn_rad,
-                  "Hand turn of the nudged trials about the GCP [rad], random axis")
-      ->check(settings_number("validation.perturbation.turn_rad"))
-      ->capture_default_str();
-}
-
 const char* const kPhysicsHelp =
     "Physics settings (JSON, or YAML named *.yaml) merged over the protocol: any SimParams "
     "fields, or a sim.json whose parameters to repeat (docs/physics.md §5a)";
-
-void add_validation_options(CLI::App* cmd, ValidationParams& v) {
-  cmd->add_option("--physics", v.physics_file, kPhysicsHelp);
-  cmd->add_option("--trials", v.trials,
-                  "Physics trials per candidate: as planned, then nudged by --trial-offset and "
-                  "--trial-turn")
-      ->check(settings_whole_number("validation.trials"))
-      ->capture_default_str();
-  cmd->add_option("--min-held", v.min_held,
-                  "A candidate is accepted when held in at least this many trials")
-      ->check(settings_whole_number("validation.min_held"))
-      ->capture_default_str();
-  cmd->add_option("--require-held-as-planned", v.require_held_as_planned,
-                  "A candidate must hold in its first trial, as planned (the grasp plan.json "
-                  "stores), as well as in --min-held trials in all (true or false)")
-      ->capture_default_str();
-  cmd->add_option("--budget", v.budget_s,
-                  "CPU budget of planning and physics together, all threads [s] (replaces "
-                  "--time-limit)")
-      ->check(settings_number("validation.budget_s"))
-      ->capture_default_str();
-  cmd->add_option("--squeeze-shift-limit", v.squeeze_shift_limit_m,
-                  "Candidates whose object moves farther while closing are dropped before lift "
-                  "[m]; 0: off")
-      ->check(settings_number("validation.squeeze_shift_limit_m"))
-      ->capture_default_str();
-  add_trial_nudge_options(cmd, v.perturbation);
-  cmd->add_option("--trial-seed", v.trial_seed, "Seed of the nudges' random directions")
-      ->check(seed_value())
-      ->capture_default_str();
-}
 
 void add_uncertainty_options(CLI::App* cmd, ValidationParams& v, const char* use) {
   const std::string model =

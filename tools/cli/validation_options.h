@@ -14,14 +14,6 @@ extern const char* const kProtocolHelp;
 /// Help of every --physics option: a settings file over the protocol.
 extern const char* const kPhysicsHelp;
 
-/// Adds --trial-offset [m] and --trial-turn [rad] (one range wherever they appear), bound to `p`.
-void add_trial_nudge_options(CLI::App* cmd, PerturbationParams& p);
-
-/// Adds --physics (the settings file), --trials, --min-held, --require-held-as-planned,
-/// --budget, --squeeze-shift-limit, --trial-offset, --trial-turn and --trial-seed, bound to
-/// `v`.
-void add_validation_options(CLI::App* cmd, ValidationParams& v);
-
 /// Adds --uncertainty (none, realistic or a file: uncertainty_settings) and
 /// --min-hold-probability of the P(held) test of validated planning, bound to `v`; `use`
 /// (when given) replaces the first sentence of --uncertainty's help.

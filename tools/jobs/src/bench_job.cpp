@@ -676,6 +676,7 @@ nlohmann::json bench_params_to_json(const BenchParams& p) {
           {"job", job},
           {"tests", p.tests},
           {"protocol", to_string(p.protocol)},
+          {"validation", p.validation ? params_to_json(*p.validation) : nlohmann::json(nullptr)},
           {"uncertainty", is_none(p.uncertainty) ? nlohmann::json(nullptr)
                                                  : params_to_json(p.uncertainty)},
           {"hold_test", is_none(p.uncertainty) ? nlohmann::json(nullptr)
