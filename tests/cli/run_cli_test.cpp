@@ -127,6 +127,21 @@ TEST(CliRun, UncertaintyAcceptsByHoldProbabilityAndReportsItWithItsInterval) {
   EXPECT_NE(report.find("P(held) [95 %]"), std::string::npos) << report;
   EXPECT_NE(report.find("P(held) under uncertainty lies above 0.50"), std::string::npos)
       << report;
+  // validate --plan re-checks under the plan's model, threshold and draws unless told
+  // otherwise (here with other draws: --seed 2).
+  const std::string again = dir.file("again.json");
+  auto v2 = run_cordgrasp("validate --plan " + quoted(dir.file("plan.json")) +
+                          " --tests lift --seed 2 -q --out " + quoted(again));
+  ASSERT_EQ(v2.exit_code, 0) << v2.output;
+  const nlohmann::json re = read_json(again);
+  EXPECT_EQ(re.at("parameters").at("uncertainty").at("mu_relative_spread"), 0.2);
+  const nlohmann::json& h2 = re.at("grasps")[0].at("hold_probability");
+  EXPECT_EQ(h2.at("threshold"), 0.5);
+  EXPECT_LE(h2.at("draws").get<int>(), 6);
+  v2 = run_cordgrasp("validate --plan " + quoted(dir.file("plan.json")) +
+                     " --tests lift --uncertainty none -q --out " + quoted(again));
+  ASSERT_EQ(v2.exit_code, 0) << v2.output;
+  EXPECT_TRUE(read_json(again).at("parameters").at("uncertainty").is_null());
 }
 
 TEST(CliRun, ProgressGoesToStderrUnlessQuiet) {

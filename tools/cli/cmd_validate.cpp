@@ -56,21 +56,21 @@ void add_validate_command(CLI::App& app) {
                       format_number(1e3 * PerturbationParams{}.offset_m) + " mm and turned by " +
                       format_number(1e3 * PerturbationParams{}.turn_rad) +
                       " mrad (held / not-held of marginal grasps is chaotic; docs/physics.md); "
-                      "with --uncertainty, the most uncertain draws per grasp (default " +
+                      "with an uncertainty model, the most uncertain draws per grasp (default: 1; "
+                      "with a model, the plan's validation.max_draws or " +
                       std::to_string(HoldProbabilityParams{}.max_draws) + ")");
-  trials
-      ->check(settings_whole_number("validation.trials"))
-      ->capture_default_str();
+  trials->check(settings_whole_number("validation.trials"));
   cmd->add_option("--uncertainty", opt->job.uncertainty,
                   "P(held) of each grasp under uncertain hand pose, friction, mass, centre of "
                   "mass and grip force: none, realistic, or a JSON/YAML file of their spreads "
                   "(docs/physics.md §3b); draws until the 95 % interval is decided against "
-                  "--min-hold-probability")
-      ->capture_default_str();
+                  "--min-hold-probability (default: the model the plan's grasps were accepted "
+                  "under by plan --validate --uncertainty, else none)");
   cmd->add_option("--min-hold-probability", opt->job.min_hold_probability,
-                  "Acceptance threshold of P(held) with --uncertainty")
-      ->check(CLI::Range(0.01, 0.99))
-      ->capture_default_str();
+                  "Acceptance threshold of P(held) with an uncertainty model (default: the "
+                  "plan's when the model is the plan's, else " +
+                      format_number(HoldProbabilityParams{}.min_hold_probability) + ")")
+      ->check(CLI::Range(0.01, 0.99));
   cmd->add_option("--seed", opt->job.seed, "Seed of the trials' random directions and draws")
       ->check(seed_value())
       ->capture_default_str();
@@ -90,9 +90,7 @@ void add_validate_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--out", opt->job.out, "Output sim.json (required unless --print-physics)");
   cmd->add_flag("--quiet,-q", opt->quiet, "No progress on stderr");
-  cmd->callback([opt, video_size, trials]() {
-    if (opt->job.uncertainty != "none" && trials->count() == 0)
-      opt->job.trials = HoldProbabilityParams{}.max_draws;
+  cmd->callback([opt, video_size]() {
     std::tie(opt->job.video.width_px, opt->job.video.height_px) = parse_image_size(*video_size);
     if (opt->print_physics) {
       std::cout << physics_settings_yaml(validate_job_physics(opt->job));

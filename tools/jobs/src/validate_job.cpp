@@ -67,10 +67,20 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   const HandModel hand = load_hand(hand_path, opt.hand_load);
   const PlanDocument plan = plan_from_json(plan_json, hand, opt.plan);  // throws for another hand
   SimParams params = physics_for_plan(opt, plan);  // settings errors before the mesh is read
-  const UncertaintyParams uncertainty = uncertainty_settings(opt.uncertainty);
+  const bool plan_model = opt.uncertainty.empty() && plan.validation &&
+                          !is_none(plan.validation->params.uncertainty);
+  const UncertaintyParams uncertainty =
+      plan_model ? plan.validation->params.uncertainty
+                 : uncertainty_settings(opt.uncertainty.empty() ? "none" : opt.uncertainty);
   const bool uncertain = !is_none(uncertainty);
-  const HoldProbabilityParams hold_test =
-      hold_test_params(opt.min_hold_probability, opt.trials, opt.seed);
+  const int trials = opt.trials > 0 ? opt.trials
+                     : !uncertain   ? 1
+                     : plan_model   ? plan.validation->params.max_draws
+                                    : HoldProbabilityParams{}.max_draws;
+  const double threshold = opt.min_hold_probability > 0.0 ? opt.min_hold_probability
+                           : plan_model ? plan.validation->params.min_hold_probability
+                                        : HoldProbabilityParams{}.min_hold_probability;
+  const HoldProbabilityParams hold_test = hold_test_params(threshold, trials, opt.seed);
   if (uncertain) {
     try {
       check_hold_probability_params(hold_test);
@@ -165,10 +175,10 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   const std::vector<int> trial_index = doc.grasp_indices;  // results' grasps before the trials
   std::vector<std::vector<SimResult>> trial_results;
   TrialWatch watch;
-  if (video && opt.trials > 1 && !uncertain) {
+  if (video && trials > 1 && !uncertain) {
     trial_samples.assign(doc.results.size(), std::vector<std::vector<PhaseSnapshot>>(
-                                                 static_cast<size_t>(opt.trials)));
-    trial_results.assign(doc.results.size(), std::vector<SimResult>(size_t(opt.trials)));
+                                                 static_cast<size_t>(trials)));
+    trial_results.assign(doc.results.size(), std::vector<SimResult>(size_t(trials)));
     watch.hook = [&](int k, int t) -> PhaseHook {
       return [&, k, t](const PhaseSnapshot& s) {
         trial_samples[size_t(k)][size_t(t)].push_back(s);
@@ -186,8 +196,8 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
                              if (cb.progress) cb.progress("P(held) of grasps", done, total);
                            },
                            opt.jobs, opt.cancel);
-  else if (opt.trials > 1)  // interrupted above: no trial runs, no grasp has all its trials
-    add_perturbed_trials(doc, plan, hand, mesh, opt.trials, opt.perturbation, opt.seed,
+  else if (trials > 1)  // interrupted above: no trial runs, no grasp has all its trials
+    add_perturbed_trials(doc, plan, hand, mesh, trials, opt.perturbation, opt.seed,
                          [&](int done, int total, const SimResult&) {
                            if (cb.grasp_line)
                              cb.grasp_line("grasp " + std::to_string(done - 1) + ": " +
@@ -220,7 +230,7 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
       const std::string title = plan.object_name + " · " + hand.name + " · grasp " +
                                 std::to_string(k);
       write(name, samples[static_cast<size_t>(k)], doc.results[i], title);
-      for (int t = 1; t < static_cast<int>(opt.trials) && !trial_samples.empty(); ++t) {
+      for (int t = 1; t < trials && !trial_samples.empty(); ++t) {
         const size_t before = static_cast<size_t>(
             std::find(trial_index.begin(), trial_index.end(), k) - trial_index.begin());
         if (before >= trial_samples.size()) continue;

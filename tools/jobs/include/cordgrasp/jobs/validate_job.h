@@ -35,14 +35,19 @@ struct ValidateJobParams {
   std::string physics_file;
   std::string cache_dir;  ///< SimParams::decomposition_cache_dir, unless the file sets it
   int grasps = -1;
-  /// Simulations per grasp: as planned, then nudged (perturbation); with `uncertainty` other
-  /// than none, the most draws of the sequential P(held) test after the as-planned one.
-  int trials = 1;
+  /// Simulations per grasp: as planned, then nudged (perturbation); with an uncertainty model,
+  /// the most draws of the sequential P(held) test after the as-planned one. 0: 1 without a
+  /// model; with one, the plan's validation.max_draws when the model is the plan's, else
+  /// HoldProbabilityParams' max_draws.
+  int trials = 0;
   /// "none" (trials are nudges), "realistic" or an uncertainty settings file
   /// (uncertainty_settings): each grasp's P(held) under uncertainty, after its as-planned run.
-  std::string uncertainty = "none";
-  /// Acceptance threshold of the P(held) test (HoldProbabilityParams) [-].
-  double min_hold_probability = HoldProbabilityParams{}.min_hold_probability;
+  /// Empty: the model the plan's grasps were accepted under (plan --validate --uncertainty),
+  /// else none.
+  std::string uncertainty;
+  /// Acceptance threshold of the P(held) test (HoldProbabilityParams) [-]. 0: the plan's
+  /// validation.min_hold_probability when the model is the plan's, else HoldProbabilityParams'.
+  double min_hold_probability = 0.0;
   int jobs = 1;  ///< threads (one physics world each); results do not depend on it
   PerturbationParams perturbation;
   std::uint64_t seed = 1;  ///< seed of the nudges or the uncertain draws
