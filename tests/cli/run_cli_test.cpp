@@ -156,14 +156,16 @@ TEST(CliRun, ProgressGoesToStderrUnlessQuiet) {
   EXPECT_NE(read_text(dir.file("report.md")).find("Physics: skipped"), std::string::npos);
 }
 
-// Two point contacts are never force closure (docs/algorithm.md §8): the parallel gripper forced
-// to point contacts cannot find a grasp, so run must fail — yet keep plan and report.
+// Without friction, force closure in 3D takes at least 7 contacts: the parallel gripper (palm and
+// two jaws, one contact each) at mu 0 with point contacts cannot find a grasp, so run must fail
+// — yet keep plan and report. (Point contacts alone were not enough: a palm-and-jaws grasp of
+// three point contacts with friction can be force closure, and one build found two.)
 TEST(CliRun, NoGraspExitsNonZeroWithAClearMessageAndStillWritesTheReport) {
   TempDir dir;
   const std::string settings = dir.write(
       "point_contacts.yaml", "quality: {contact: {soft_finger_radius_m: 0}}\ntime_limit_s: 1\n");
   const auto r = run_cordgrasp("run --hand parallel_gripper --settings " + quoted(settings) +
-                               " --object box --quiet --out-dir " +
+                               " --mu 0 --object box --quiet --out-dir " +
                                quoted((dir.path / "out").string()));
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("no force-closure grasp of box with parallel_gripper"),
