@@ -238,9 +238,10 @@ def collect(out):
                 row["nudged_held_of_3"] = None if nd is None else nd["trials"]["held"]
                 ph = sg("phold")
                 hp = ph.get("hold_probability") if ph else None
-                for k in ("p", "low", "high", "draws", "held", "verdict", "cpu_s"):
-                    row[("p_" + k) if k not in ("p",) else "p_held"] = \
-                        None if hp is None else hp[k]
+                for k, col in (("p", "p_held"), ("low", "p_low"), ("high", "p_high"),
+                               ("draws", "draws"), ("held", "p_held_draws"),
+                               ("verdict", "p_verdict"), ("cpu_s", "p_cpu_s")):
+                    row[col] = None if hp is None else hp[k]
                 hs = sg("harsh")
                 hh = hs.get("hold_probability") if hs else None
                 row["harsh_held"] = None if hh is None else hh["held"]
@@ -341,7 +342,7 @@ def cmd_table(a):
                 w.writerow(r)
     print("%d grasps in %s" % (len(rows), csv_path))
     hands = sorted({r["hand"] for r in rows})
-    print("\nAUC (Mann-Whitney, ties half) [95 %% bootstrap over objects]")
+    print("\nAUC (Mann-Whitney, ties half) [95 % bootstrap over objects]")
     for lname, lab in LABELS:
         print("\nlabel: %s" % lname)
         print("| hand | grasps | objects | positives | " +
@@ -402,7 +403,7 @@ def cmd_table(a):
               " (process CPU / grasps, incl. the as-planned run), draws median %g" % (
                   h, len(sub), med([r["proc_cpu_default_s"] for r in sub]),
                   med([r["p_cpu_s"] for r in sub]), med([r["proc_cpu_p_held_s"] for r in sub]),
-                  med([r["p_draws"] for r in sub])))
+                  med([r["draws"] for r in sub])))
 
 
 def cmd_revalidate(a):
