@@ -369,23 +369,33 @@ def cmd_table(a):
         frac = [r["harsh_held"] / r["harsh_draws"] for r in sub]
         print("  %s (%d): " % (h, len(sub)) + ", ".join(
             "%s %s" % (p, fmt(spearman([f(r) for r in sub], frac))) for p, f in PREDICTORS))
-    print("\nBase rates and thresholds")
+    print("\nSelection rules: grasps kept, and of them held under the harsher draws / in "
+          "MuJoCo (precision; recall = kept positives / all positives)")
+    rules = [("P(held) >= %.1f" % t, (lambda t: lambda r: r["p_held"] >= t)(t))
+             for t in (0.5, 0.6, 0.7, 0.8, 0.9)]
+    rules += [("P(held) decided above 0.8", lambda r: r["p_verdict"] == "above"),
+              ("P(held) not decided below 0.8", lambda r: r["p_verdict"] != "below"),
+              ("nudged 2-of-3", lambda r: r["nudged_held_of_3"] >= 2),
+              ("nudged 3-of-3", lambda r: r["nudged_held_of_3"] >= 3),
+              ("held as planned", lambda r: r["as_planned_held"] == 1)]
     for h in hands + ["all"]:
         sub = [r for r in rows if (h == "all" or r["hand"] == h)
                and complete(r, "harsh") and r["mujoco_held"] is not None]
         if not sub:
             continue
-        for t in (0.5, 0.6, 0.7, 0.8, 0.9):
-            sel = [r for r in sub if r["p_held"] >= t]
+        hp = sum(LABELS[0][1](r) for r in sub)
+        mp = sum(r["mujoco_held"] for r in sub)
+        print("\n%s: %d grasps, harsh positives %d, MuJoCo positives %d" % (h, len(sub), hp, mp))
+        print("| rule | kept | harsh held (precision, recall) | MuJoCo held (precision, recall) |")
+        print("|---|---|---|---|")
+        for name, rule in rules:
+            sel = [r for r in sub if rule(r)]
             hh = sum(LABELS[0][1](r) for r in sel)
             mm = sum(r["mujoco_held"] for r in sel)
-            dec = sum(1 for r in sel if r["p_verdict"] == "above")
-            print("  %s: P(held) >= %.1f: %d of %d grasps (%d decided above 0.8); harsh held "
-                  "%d, MuJoCo held %d" % (h, t, len(sel), len(sub), dec, hh, mm))
-        sel = [r for r in sub if r["nudged_held_of_3"] >= 2]
-        print("  %s: nudged 2-of-3: %d of %d grasps; harsh held %d, MuJoCo held %d" % (
-            h, len(sel), len(sub), sum(LABELS[0][1](r) for r in sel),
-            sum(r["mujoco_held"] for r in sel)))
+            print("| %s | %d | %d (%s, %s) | %d (%s, %s) |" % (
+                name, len(sel), hh, fmt(hh / len(sel) if sel else None),
+                fmt(hh / hp if hp else None), mm, fmt(mm / len(sel) if sel else None),
+                fmt(mm / mp if mp else None)))
     print("\nCPU per grasp (median over grasps with both runs)")
     for h in hands + ["all"]:
         sub = [r for r in rows if (h == "all" or r["hand"] == h) and r["p_cpu_s"] is not None
@@ -398,71 +408,20 @@ def cmd_table(a):
             n = len(v)
             return (v[n // 2] + v[(n - 1) // 2]) / 2.0
 
-        print("  %s (%d grasps): default validate %.2f s (process CPU / grasps, median over "
-              "plans' grasps), P(held) draws %.2f s (hold_probability.cpu_s), P(held) run %.2f s"
-              " (process CPU / grasps, incl. the as-planned run), draws median %g" % (
+        print("  %s (%d grasps): default validate %.2f s per grasp (process CPU / the plan's "
+              "grasps); P(held) run %.2f s per grasp (process CPU / grasps, incl. process start "
+              "and the as-planned run); draws only (hold_probability.cpu_s) %.2f s; draws + the "
+              "default per-grasp CPU %.2f s; median draws %g" % (
                   h, len(sub), med([r["proc_cpu_default_s"] for r in sub]),
-                  med([r["p_cpu_s"] for r in sub]), med([r["proc_cpu_p_held_s"] for r in sub]),
+                  med([r["proc_cpu_p_held_s"] for r in sub]), med([r["p_cpu_s"] for r in sub]),
+                  med([r["p_cpu_s"] + r["proc_cpu_default_s"] for r in sub]),
                   med([r["draws"] for r in sub])))
-
-
-def cmd_revalidate(a):
-    os.makedirs(a.out, exist_ok=True)
-    physics = os.path.join(a.out, "physics.json")
-    os.makedirs(os.path.join(a.out, "hacd"), exist_ok=True)
-    json.dump({"decomposition_cache_dir": os.path.join(a.out, "hacd")}, open(physics, "w"))
-    settings = os.path.join(a.out, "budget.yaml")
-    open(settings, "w").write("validation:\n  budget_s: %g\n" % a.budget_s)
-    t_start = time.time()
-    rdir = os.path.join(a.out, "revalidate")
-    os.makedirs(rdir, exist_ok=True)
-    for obj in a.objects:
-        if a.deadline and time.time() - t_start > a.deadline:
-            print("deadline reached; stopping (resume with the same command)")
-            break
-        base = os.path.join(rdir, object_name(obj))
-        log = base + ".log"
-        cpu_file = base + ".cpu.json"
-        cpu = json.load(open(cpu_file)) if os.path.exists(cpu_file) else {}
-        steps = [
-            ("plan_validated", base + ".plan.json",
-             [CG, "plan", "--hand", a.hand, "--object", obj, "--units", "auto", "--grasps", "3",
-              "--validate", "--uncertainty", "realistic", "--settings", settings,
-              "--physics", physics, "--jobs", "1", "-q", "--out", tmp_name(base + ".plan.json")]),
-            ("revalidate", base + ".seed2.json",
-             [CG, "validate", "--plan", base + ".plan.json", "--tests", "lift,shake",
-              "--uncertainty", "realistic", "--seed", "2", "--trials", "20",
-              "--physics", physics, "--jobs", "1", "-q",
-              "--out", tmp_name(base + ".seed2.json")]),
-        ]
-        for name, out, cmd in steps:
-            if name != "plan_validated" and not os.path.exists(base + ".plan.json"):
-                break
-            c = run_step(cmd, out, a.timeout, log)
-            if c is not None:
-                cpu[name] = c
-                json.dump(cpu, open(cpu_file, "w"), indent=1)
-                print("%s %s: %.1f s CPU" % (object_name(obj), name, c), flush=True)
-    ps = []
-    print("\n| object | accepted | plan CPU | P(held) seed 1 (plan) | P(held) seed 2 |")
-    print("|---|---|---|---|---|")
-    for obj in a.objects:
-        base = os.path.join(rdir, object_name(obj))
-        plan = load(base + ".plan.json")
-        sim = load(base + ".seed2.json")
-        cpu = load(base + ".cpu.json") or {}
-        if plan is None:
-            continue
-        p1 = [g.get("validation", {}) for g in plan["grasps"]]
-        p1 = ["%d/%d" % (v.get("held_trials", 0), v.get("trials", 0)) for v in p1]
-        p2 = [] if sim is None else [g["hold_probability"]["p"] for g in sim["grasps"]]
-        ps += p2
-        print("| %s | %d | %s | %s | %s |" % (
-            object_name(obj), len(plan["grasps"]), fmt(cpu.get("plan_validated"), 0) + " s",
-            ", ".join(p1), ", ".join("%.2f" % p for p in p2)))
-    if ps:
-        print("average P(held) with seed 2 over %d accepted grasps: %.3f" % (
-            len(ps), sum(ps) / len(ps)))
+        for verdict in ("below", "above", "undecided"):
+            v = [r for r in sub if r["p_verdict"] == verdict]
+            if v:
+                print("    %s: %d grasps, draws median %g, draws CPU median %.2f s, max %.2f s" % (
+                    verdict, len(v), med([r["draws"] for r in v]),
+                    med([r["p_cpu_s"] for r in v]), max(r["p_cpu_s"] for r in v)))
 
 
 def main():
