@@ -424,6 +424,65 @@ def cmd_table(a):
                     med([r["p_cpu_s"] for r in v]), max(r["p_cpu_s"] for r in v)))
 
 
+def cmd_revalidate(a):
+    os.makedirs(a.out, exist_ok=True)
+    physics = os.path.join(a.out, "physics.json")
+    os.makedirs(os.path.join(a.out, "hacd"), exist_ok=True)
+    json.dump({"decomposition_cache_dir": os.path.join(a.out, "hacd")}, open(physics, "w"))
+    settings = os.path.join(a.out, "budget.yaml")
+    open(settings, "w").write("validation:\n  budget_s: %g\n" % a.budget_s)
+    t_start = time.time()
+    rdir = os.path.join(a.out, "revalidate")
+    os.makedirs(rdir, exist_ok=True)
+    for obj in a.objects:
+        if a.deadline and time.time() - t_start > a.deadline:
+            print("deadline reached; stopping (resume with the same command)")
+            break
+        base = os.path.join(rdir, object_name(obj))
+        log = base + ".log"
+        cpu_file = base + ".cpu.json"
+        cpu = json.load(open(cpu_file)) if os.path.exists(cpu_file) else {}
+        steps = [
+            ("plan_validated", base + ".plan.json",
+             [CG, "plan", "--hand", a.hand, "--object", obj, "--units", "auto", "--grasps", "3",
+              "--validate", "--uncertainty", "realistic", "--settings", settings,
+              "--physics", physics, "--jobs", "1", "-q", "--out", tmp_name(base + ".plan.json")]),
+            ("revalidate", base + ".seed2.json",
+             [CG, "validate", "--plan", base + ".plan.json", "--tests", "lift,shake",
+              "--uncertainty", "realistic", "--seed", "2", "--trials", "20",
+              "--physics", physics, "--jobs", "1", "-q",
+              "--out", tmp_name(base + ".seed2.json")]),
+        ]
+        for name, out, cmd in steps:
+            if name != "plan_validated" and not os.path.exists(base + ".plan.json"):
+                break
+            c = run_step(cmd, out, a.timeout, log)
+            if c is not None:
+                cpu[name] = c
+                json.dump(cpu, open(cpu_file, "w"), indent=1)
+                print("%s %s: %.1f s CPU" % (object_name(obj), name, c), flush=True)
+    ps = []
+    print("\n| object | accepted | plan CPU | P(held) seed 1 (plan) | P(held) seed 2 |")
+    print("|---|---|---|---|---|")
+    for obj in a.objects:
+        base = os.path.join(rdir, object_name(obj))
+        plan = load(base + ".plan.json")
+        sim = load(base + ".seed2.json")
+        cpu = load(base + ".cpu.json") or {}
+        if plan is None:
+            continue
+        p1 = [g.get("validation", {}) for g in plan["grasps"]]
+        p1 = ["%d/%d" % (v.get("held_trials", 0), v.get("trials", 0)) for v in p1]
+        p2 = [] if sim is None else [g["hold_probability"]["p"] for g in sim["grasps"]]
+        ps += p2
+        print("| %s | %d | %s | %s | %s |" % (
+            object_name(obj), len(plan["grasps"]), fmt(cpu.get("plan_validated"), 0) + " s",
+            ", ".join(p1), ", ".join("%.2f" % p for p in p2)))
+    if ps:
+        print("average P(held) with seed 2 over %d accepted grasps: %.3f" % (
+            len(ps), sum(ps) / len(ps)))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
