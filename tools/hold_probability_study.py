@@ -201,7 +201,7 @@ def collect(out):
     rows = []
     for hand in sorted(os.listdir(out)):
         hdir = os.path.join(out, hand)
-        if not os.path.isdir(hdir) or hand in ("hacd", "mjcache"):
+        if not os.path.isdir(hdir) or hand in ("hacd", "mjcache", "revalidate"):
             continue
         for f in sorted(os.listdir(hdir)):
             if not f.endswith(".plan.json") or f.startswith("tmp."):
