@@ -138,5 +138,22 @@ TEST(CliPlan, RejectsAnUnknownQualityModeNamingTheFileAndKey) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("x.json")));
 }
 
+// Validated planning that simulates force-closure candidates and accepts none says so (not "no
+// force-closure grasp"), with its counts; plan.json is still written.
+TEST(CliPlan, ValidatedPlanningThatAcceptsNothingSaysNoneHeldNotNoForceClosure) {
+  test::TempDir dir;
+  const std::string heavy = dir.write("heavy.json", "{\"mass_kg\": 50}\n");
+  const std::string few = dir.write("few.yaml", "max_attempts: 40\n");
+  const auto r = test::run_cordgrasp(
+      "plan --hand parallel_gripper --object box --validate --physics " + test::quoted(heavy) +
+      " --settings " + test::quoted(few) + " --out " + test::quoted(dir.file("p.json")));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("no grasp of box with parallel_gripper accepted in physics"),
+            std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("no force-closure grasp"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(" simulated, "), std::string::npos) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir.file("p.json")));
+}
+
 }  // namespace
 }  // namespace cordgrasp

@@ -104,7 +104,7 @@ void run_plan(const PlanOptions& opt) {
     throw Interrupted("interrupted by " + doc.interrupted);
   }
   if (doc.grasps.empty())
-    throw NoGraspFound(no_grasp_message("plan", doc, mesh) + ". Wrote " + opt.out);
+    throw NoGraspFound(no_accepted_grasp_message("plan", doc, mesh) + ". Wrote " + opt.out);
 }
 
 }  // namespace

@@ -111,14 +111,8 @@ void require_grasps(const RunInputs& in, const RunReport& report) {
   const PlanDocument& plan = report.plan;
   if (!plan.grasps.empty()) return;
   write_reports(in, report, {});
-  if (plan.validation && plan.validation->stats.force_closure > 0)
-    throw NoGraspFound("run: no grasp of " + in.mesh->name + " with " + in.hand.name +
-                       " held in physics (" +
-                       validation_stats_line(plan.validation->stats, plan.params.grasps) +
-                       "); try a larger --budget, another --seed or --planner. Wrote " +
-                       in.plan_path + " and " + in.report_path);
-  throw NoGraspFound(no_grasp_message("run", plan, *in.mesh) + ". Wrote " + in.plan_path +
-                     " and " + in.report_path);
+  throw NoGraspFound(no_accepted_grasp_message("run", plan, *in.mesh) + ". Wrote " +
+                     in.plan_path + " and " + in.report_path);
 }
 
 /// 2. Physics of the plan as written (poses as quaternions, so that `cordgrasp validate

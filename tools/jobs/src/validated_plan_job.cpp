@@ -42,4 +42,17 @@ std::string validation_stats_line(const ValidationStats& s, int wanted) {
   return line;
 }
 
+std::string no_accepted_grasp_message(const std::string& who, const PlanDocument& doc,
+                                      const Mesh& mesh) {
+  if (!doc.validation || doc.validation->stats.force_closure == 0)
+    return no_grasp_message(who, doc, mesh);
+  const ValidationStats& s = doc.validation->stats;
+  return who + ": no grasp of " + doc.object_name + " with " + doc.hand_name +
+         " accepted in physics (" + validation_stats_line(s, doc.params.grasps) + "); try " +
+         (s.budget_spent ? "a larger validation.budget_s (--settings), " : "") +
+         "another --seed or --planner" +
+         (is_none(doc.validation->params.uncertainty) ? ""
+                                                       : " or a lower --min-hold-probability");
+}
+
 }  // namespace cordgrasp

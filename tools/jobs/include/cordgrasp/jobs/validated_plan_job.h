@@ -33,4 +33,10 @@ PlanDocument validated_plan_job(const PlanJobParams& job, const ValidationParams
 /// 2.1 s, 14.3 s in all)".
 std::string validation_stats_line(const ValidationStats& s, int wanted);
 
+/// Why `doc` (a plan, validated or not) holds no grasp, for `who` ("plan", "run"): with
+/// force-closure candidates that validated planning simulated, that none was accepted (its
+/// validation_stats_line, and what to try); otherwise no_grasp_message.
+std::string no_accepted_grasp_message(const std::string& who, const PlanDocument& doc,
+                                      const Mesh& mesh);
+
 }  // namespace cordgrasp
