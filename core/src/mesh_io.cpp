@@ -199,8 +199,21 @@ void check_off_faces(const std::string& path) {
   const bool counts_inline = after_keyword.find_first_of("0123456789") != std::string::npos;
   const size_t first_vertex_line = counts_inline ? 1 : 2;
   std::istringstream counts(counts_inline ? after_keyword : lines.size() > 1 ? lines[1] : "");
-  long long vertices = 0, faces = 0;
-  if (!(counts >> vertices >> faces) || vertices < 0 || faces < 0) return;  // assimp's to judge
+  // A count too large for any file of this size (a vertex or a face takes a byte at least; one
+  // of 10^55 once made assimp allocate 45 GB) is refused before assimp sizes its arrays by it.
+  const uintmax_t file_bytes = std::filesystem::file_size(path);
+  std::string vertex_token, face_token;
+  if (!(counts >> vertex_token >> face_token)) return;  // assimp's to judge
+  auto count = [&](const std::string& token) -> long long {
+    if (token.find_first_not_of("0123456789") != std::string::npos) return -1;
+    if (token.size() > 18 || std::stoull(token) > file_bytes)
+      fail(path, "OFF header counts " + token.substr(0, 24) +
+                     (token.size() > 24 ? "..." : "") + " elements, more than the file's " +
+                     std::to_string(file_bytes) + " bytes could hold");
+    return std::stoll(token);
+  };
+  const long long vertices = count(vertex_token), faces = count(face_token);
+  if (vertices < 0 || faces < 0) return;  // not whole numbers: assimp's to judge
   for (long long f = 0; f < faces && size_t(first_vertex_line + vertices + f) < lines.size(); ++f) {
     std::istringstream face(lines[size_t(first_vertex_line + vertices + f)]);
     long long n = 0;
