@@ -184,7 +184,7 @@ void check_ply_header(const std::string& path, uintmax_t file_bytes) {
 // not hold its vertex count's indices ("3ply"): a file that starts like OFF must give each face
 // line a vertex count >= 1 and that many whole-number indices below its vertex count (colours
 // may follow).
-void check_off_faces(const std::string& path) {
+void check_off_faces(const std::string& path, uintmax_t file_bytes) {
   std::ifstream in(path, std::ios::binary);
   std::vector<std::string> lines;  // non-empty lines without comments
   for (std::string line; std::getline(in, line);) {
@@ -194,16 +194,18 @@ void check_off_faces(const std::string& path) {
     lines.push_back(line);
   }
   if (lines.empty()) return;
-  // The counts follow the keyword on its line ("OFF 4 4 6") or on the next one.
-  const std::string after_keyword = lines[0].substr(lines[0].find("OFF") + 3);
-  const bool counts_inline = after_keyword.find_first_of("0123456789") != std::string::npos;
-  const size_t first_vertex_line = counts_inline ? 1 : 2;
-  std::istringstream counts(counts_inline ? after_keyword : lines.size() > 1 ? lines[1] : "");
+  // The vertex and face counts follow the keyword, on its line ("OFF 4 4 6") or on the next
+  // ones, even one per line; the vertex lines start after the line holding the face count.
+  std::vector<std::string> count_tokens;
+  size_t first_vertex_line = 1;
+  for (size_t i = 0; i < lines.size() && count_tokens.size() < 2; ++i) {
+    std::istringstream words(i == 0 ? lines[0].substr(lines[0].find("OFF") + 3) : lines[i]);
+    for (std::string token; count_tokens.size() < 2 && words >> token;) count_tokens.push_back(token);
+    first_vertex_line = i + 1;
+  }
+  if (count_tokens.size() < 2) return;  // assimp's to judge
   // A count too large for any file of this size (a vertex or a face takes a byte at least; one
   // of 10^55 once made assimp allocate 45 GB) is refused before assimp sizes its arrays by it.
-  const uintmax_t file_bytes = std::filesystem::file_size(path);
-  std::string vertex_token, face_token;
-  if (!(counts >> vertex_token >> face_token)) return;  // assimp's to judge
   auto count = [&](const std::string& token) -> long long {
     if (token.find_first_not_of("0123456789") != std::string::npos) return -1;
     if (token.size() > 18 || std::stoull(token) > file_bytes)
@@ -212,6 +214,8 @@ void check_off_faces(const std::string& path) {
                      std::to_string(file_bytes) + " bytes could hold");
     return std::stoll(token);
   };
+  const std::string& vertex_token = count_tokens[0];
+  const std::string& face_token = count_tokens[1];
   const long long vertices = count(vertex_token), faces = count(face_token);
   if (vertices < 0 || faces < 0) return;  // not whole numbers: assimp's to judge
   for (long long f = 0; f < faces && size_t(first_vertex_line + vertices + f) < lines.size(); ++f) {
@@ -252,7 +256,7 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   const uintmax_t file_bytes = fs::file_size(path, ec);
   if (file_bytes == 0 && !ec) fail(path, "empty file (0 bytes)");
   check_ply_header(path, file_bytes);
-  check_off_faces(path);
+  check_off_faces(path, file_bytes);
   Assimp::Importer importer;
   std::string ext = fs::path(path).extension().string();
   if (ext.empty() || !importer.IsExtensionSupported(ext))
