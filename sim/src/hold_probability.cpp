@@ -61,6 +61,11 @@ void check_hold_probability_params(const HoldProbabilityParams& p) {
                                 " is not in [1, max_draws " + std::to_string(p.max_draws) + "]");
 }
 
+void check_hold_test(const UncertaintyParams& uncertainty, const HoldProbabilityParams& params) {
+  check_uncertainty_params(uncertainty);
+  check_hold_probability_params(params);
+}
+
 HoldProbabilityParams hold_test_params(double min_hold_probability, int max_draws,
                                        std::uint64_t seed) {
   HoldProbabilityParams out;
@@ -124,8 +129,7 @@ HoldProbability estimate_hold_probability(const Mesh& mesh, const HandModel& han
                                           const UncertaintyParams& uncertainty,
                                           const HoldProbabilityParams& params,
                                           const CancelToken& cancel, int jobs) {
-  check_uncertainty_params(uncertainty);
-  check_hold_probability_params(params);
+  check_hold_test(uncertainty, params);
   const auto start = std::chrono::steady_clock::now();
   HoldProbability out;
   out.threshold = params.min_hold_probability;

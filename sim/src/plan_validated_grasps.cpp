@@ -155,10 +155,7 @@ ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, Pla
   const bool uncertain = !is_none(v.uncertainty);
   const HoldProbabilityParams hold_test =
       hold_test_params(v.min_hold_probability, v.max_draws, v.trial_seed);
-  if (uncertain) {
-    check_uncertainty_params(v.uncertainty);
-    check_hold_probability_params(hold_test);
-  }
+  if (uncertain) check_hold_test(v.uncertainty, hold_test);
   if (planner == PlannerKind::kCord && !cord)
     throw std::invalid_argument("plan_validated_grasps: the cord planner needs CordParams");
   const auto start = Clock::now();

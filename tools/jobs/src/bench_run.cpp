@@ -130,8 +130,7 @@ BenchRunOutcome run_bench(const BenchRunParams& opt, const BenchRunCallbacks& cb
                                       opt.validation.max_draws, opt.validation.trial_seed);
   if (!is_none(params.uncertainty)) {
     try {
-      check_uncertainty_params(params.uncertainty);
-      check_hold_probability_params(params.hold_test);
+      check_hold_test(params.uncertainty, params.hold_test);
     } catch (const std::invalid_argument& e) {
       throw InputError(std::string("bench: --uncertainty / --min-hold-probability: ") +
                        e.what());

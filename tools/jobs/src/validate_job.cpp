@@ -44,6 +44,40 @@ SimParams physics_for_plan(const ValidateJobParams& opt, const PlanDocument& pla
   return physics_settings(plan_contact_model(plan), choice);
 }
 
+// The P(held) test of a validate run: the uncertainty model, draws per grasp and threshold
+// given, else the plan's (a plan accepted under uncertainty), else the defaults. max_draws is
+// the trials per grasp also without uncertainty (1 unless --trials).
+struct HoldTest {
+  UncertaintyParams uncertainty;
+  HoldProbabilityParams test;
+};
+
+HoldTest hold_test_for(const ValidateJobParams& opt, const PlanDocument& plan) {
+  const bool plan_model = opt.uncertainty.empty() && plan.validation &&
+                          !is_none(plan.validation->params.uncertainty);
+  const HoldProbabilityParams defaults;
+  const int plan_draws = plan_model ? plan.validation->params.max_draws : defaults.max_draws;
+  const double plan_threshold = plan_model ? plan.validation->params.min_hold_probability
+                                           : defaults.min_hold_probability;
+  HoldTest out;
+  out.uncertainty = plan_model ? plan.validation->params.uncertainty
+                               : uncertainty_settings(opt.uncertainty.empty() ? "none"
+                                                                              : opt.uncertainty);
+  const bool uncertain = !is_none(out.uncertainty);
+  const int trials = opt.trials > 0 ? opt.trials : uncertain ? plan_draws : 1;
+  const double threshold =
+      opt.min_hold_probability > 0.0 ? opt.min_hold_probability : plan_threshold;
+  out.test = hold_test_params(threshold, trials, opt.seed);
+  if (uncertain) {
+    try {
+      check_hold_test(out.uncertainty, out.test);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(std::string("validate: --min-hold-probability / --trials: ") + e.what());
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 SimParams validate_job_physics(const ValidateJobParams& opt) {
@@ -67,27 +101,9 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   const HandModel hand = load_hand(hand_path, opt.hand_load);
   const PlanDocument plan = plan_from_json(plan_json, hand, opt.plan);  // throws for another hand
   SimParams params = physics_for_plan(opt, plan);  // settings errors before the mesh is read
-  const bool plan_model = opt.uncertainty.empty() && plan.validation &&
-                          !is_none(plan.validation->params.uncertainty);
-  const UncertaintyParams uncertainty =
-      plan_model ? plan.validation->params.uncertainty
-                 : uncertainty_settings(opt.uncertainty.empty() ? "none" : opt.uncertainty);
-  const bool uncertain = !is_none(uncertainty);
-  const int trials = opt.trials > 0 ? opt.trials
-                     : !uncertain   ? 1
-                     : plan_model   ? plan.validation->params.max_draws
-                                    : HoldProbabilityParams{}.max_draws;
-  const double threshold = opt.min_hold_probability > 0.0 ? opt.min_hold_probability
-                           : plan_model ? plan.validation->params.min_hold_probability
-                                        : HoldProbabilityParams{}.min_hold_probability;
-  const HoldProbabilityParams hold_test = hold_test_params(threshold, trials, opt.seed);
-  if (uncertain) {
-    try {
-      check_hold_probability_params(hold_test);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(std::string("validate: --min-hold-probability / --trials: ") + e.what());
-    }
-  }
+  const HoldTest hold = hold_test_for(opt, plan);
+  const bool uncertain = !is_none(hold.uncertainty);
+  const int trials = hold.test.max_draws;  // per grasp, with or without uncertainty
 
   // Object: the plan's, or the one given (which must be the plan's geometry).
   MeshLoadOptions mesh_opt;
@@ -187,7 +203,7 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
     watch.done = [&](int k, int t, const SimResult& r) { trial_results[size_t(k)][size_t(t)] = r; };
   }
   if (uncertain)  // P(held): the draws of each grasp in order until its test is decided
-    add_hold_probabilities(doc, plan, hand, mesh, uncertainty, hold_test,
+    add_hold_probabilities(doc, plan, hand, mesh, hold.uncertainty, hold.test,
                            [&](int done, int total, const SimResult&) {
                              if (cb.grasp_line)
                                cb.grasp_line("grasp " + std::to_string(done - 1) + ": " +

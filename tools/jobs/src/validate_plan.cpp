@@ -156,8 +156,7 @@ void add_hold_probabilities(SimDocument& doc, const PlanDocument& plan, const Ha
                             const Mesh& mesh, const UncertaintyParams& uncertainty,
                             const HoldProbabilityParams& test, const ValidateProgress& progress,
                             int jobs, const CancelToken& cancel) {
-  check_uncertainty_params(uncertainty);
-  check_hold_probability_params(test);
+  check_hold_test(uncertainty, test);
   const auto start = std::chrono::steady_clock::now();
   doc.uncertainty = uncertainty;
   doc.hold_test = test;

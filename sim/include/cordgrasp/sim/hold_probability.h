@@ -38,6 +38,11 @@ struct HoldProbabilityParams {
 /// @throws std::invalid_argument naming the field.
 void check_hold_probability_params(const HoldProbabilityParams& params);
 
+/// Checks a P(held) test whole: its uncertainty model (check_uncertainty_params) and its
+/// sequential test (check_hold_probability_params).
+/// @throws std::invalid_argument naming the field.
+void check_hold_test(const UncertaintyParams& uncertainty, const HoldProbabilityParams& params);
+
 /// The sequential test at `min_hold_probability`, with at most `max_draws` draws from `seed`
 /// (min_draws lowered to max_draws when fewer draws are allowed than its default).
 HoldProbabilityParams hold_test_params(double min_hold_probability, int max_draws,
