@@ -206,12 +206,19 @@ void check_off_faces(const std::string& path, uintmax_t file_bytes) {
   if (count_tokens.size() < 2) return;  // assimp's to judge
   // A count too large for any file of this size (a vertex or a face takes a byte at least; one
   // of 10^55 once made assimp allocate 45 GB) is refused before assimp sizes its arrays by it.
+  // assimp reads a count's leading digits ("12(3" counts 12), so every run of digits in the
+  // count tokens is bounded.
   auto count = [&](const std::string& token) -> long long {
+    for (size_t b = token.find_first_of("0123456789"); b != std::string::npos;) {
+      const size_t e = std::min(token.size(), token.find_first_not_of("0123456789", b));
+      const std::string run = token.substr(b, e - b);
+      if (run.size() > 18 || std::stoull(run) > file_bytes)
+        fail(path, "OFF header counts " + run.substr(0, 24) + (run.size() > 24 ? "..." : "") +
+                       " elements, more than the file's " + std::to_string(file_bytes) +
+                       " bytes could hold");
+      b = token.find_first_of("0123456789", e);
+    }
     if (token.find_first_not_of("0123456789") != std::string::npos) return -1;
-    if (token.size() > 18 || std::stoull(token) > file_bytes)
-      fail(path, "OFF header counts " + token.substr(0, 24) +
-                     (token.size() > 24 ? "..." : "") + " elements, more than the file's " +
-                     std::to_string(file_bytes) + " bytes could hold");
     return std::stoll(token);
   };
   const std::string& vertex_token = count_tokens[0];
