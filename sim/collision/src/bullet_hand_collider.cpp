@@ -129,9 +129,6 @@ class ObjectTriangles {
       if (!((b - a).cross(c - a).squaredNorm() <= 0.0)) usable.triangles.push_back(t);
     }
     bvh_ = build_mesh_bvh(usable, kLeafTriangles, MeshBvhSplit::kCornerSum);
-    corners_.reserve(3 * bvh_.triangles.size());
-    for (const Eigen::Vector3i& t : bvh_.triangles)
-      for (int k = 0; k < 3; ++k) corners_.push_back(to_bt(bvh_.vertices[t[k]]));
   }
 
   bool empty() const { return bvh_.nodes.empty(); }
@@ -176,8 +173,11 @@ class ObjectTriangles {
       if (separated) continue;
       if (node.count > 0) {
         for (int k = node.first; k < node.first + node.count; ++k) {
-          const size_t t = static_cast<size_t>(k);
-          if (f(corners_[3 * t], corners_[3 * t + 1], corners_[3 * t + 2])) return;
+          const Eigen::Vector3i& t = bvh_.triangles[static_cast<size_t>(k)];
+          if (f(to_bt(bvh_.vertices[static_cast<size_t>(t[0])]),
+                to_bt(bvh_.vertices[static_cast<size_t>(t[1])]),
+                to_bt(bvh_.vertices[static_cast<size_t>(t[2])])))
+            return;
         }
       } else {
         // Median splits keep the depth <= log2(triangles) + 1, far below the stack size.
@@ -191,8 +191,7 @@ class ObjectTriangles {
  private:
   static constexpr int kLeafTriangles = 4;
   static constexpr int kStackSize = 64;
-  MeshBvh bvh_;
-  std::vector<btVector3> corners_;  // 3 per triangle in the BVH's leaf order, object frame
+  MeshBvh bvh_;  // corners are read through its vertex indices (no per-triangle copy)
 };
 
 // Closest points (or first penetration) of one convex child against the object's triangles.
