@@ -37,10 +37,11 @@ double seconds_since(Clock::time_point t0) {
 }  // namespace
 
 std::vector<GraspRegion> explore_cords(const Mesh& mesh, double palm_width_m,
-                                       const CordParams& params, ExplorationStats* stats_out) {
+                                       const CordParams& params, ExplorationStats* stats_out,
+                                       std::shared_ptr<const MeshBvh> object_bvh) {
   const Clock::time_point start = Clock::now();
   if (!(palm_width_m > 0.0)) throw std::invalid_argument("explore_cords: palm width must be > 0 m");
-  const CordObject object = make_cord_object(mesh);
+  const CordObject object = make_cord_object(mesh, std::move(object_bvh));
   ExplorationStats st;
   const bool timed = params.time_limit_s > 0.0;
   const Clock::time_point deadline =

@@ -129,7 +129,7 @@ std::optional<FrontCord> front_cord(const CordObject& object, const Eigen::Vecto
   const PlaneFrame frame = guide_frame(p1, p2, p3);
   const Eigen::Vector2d region[3] = {Eigen::Vector2d::Zero(), frame.to_2d(p2), frame.to_2d(p3)};
   segments.clear();
-  append_plane_cross_section_segments(object.bvh, frame, segments, region);
+  append_plane_cross_section_segments(*object.bvh, frame, segments, region);
   return front_cord_from_segments(frame, p2, p3, segments, object.radius_m, params, failure);
 }
 

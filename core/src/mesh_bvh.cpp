@@ -114,4 +114,25 @@ MeshBvh build_mesh_bvh(const Mesh& mesh, int max_leaf_triangles, MeshBvhSplit sp
   return bvh;
 }
 
+MeshBvh build_object_bvh(const Mesh& mesh) {
+  Mesh usable;
+  usable.name = mesh.name;
+  usable.vertices = mesh.vertices;
+  usable.triangles.reserve(mesh.triangles.size());
+  std::vector<int> ids;  // usable triangle -> mesh triangle
+  ids.reserve(mesh.triangles.size());
+  for (size_t k = 0; k < mesh.triangles.size(); ++k) {
+    const Eigen::Vector3i& t = mesh.triangles[k];
+    const Eigen::Vector3d& a = mesh.vertices[static_cast<size_t>(t[0])];
+    const Eigen::Vector3d& b = mesh.vertices[static_cast<size_t>(t[1])];
+    const Eigen::Vector3d& c = mesh.vertices[static_cast<size_t>(t[2])];
+    if ((b - a).cross(c - a).squaredNorm() <= 0.0) continue;
+    usable.triangles.push_back(t);
+    ids.push_back(static_cast<int>(k));
+  }
+  MeshBvh bvh = build_mesh_bvh(usable, 4, MeshBvhSplit::kCornerSum);
+  for (int& id : bvh.triangle_ids) id = ids[static_cast<size_t>(id)];
+  return bvh;
+}
+
 }  // namespace cordgrasp

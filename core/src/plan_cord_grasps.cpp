@@ -122,7 +122,7 @@ PlanResult plan_cord_grasps(const Mesh& mesh, const HandModel& hand, HandObjectC
     explore.time_limit_s = params.time_limit_s;
   const double w_palm = palm_width(hand);
   ExplorationStats explored;
-  const std::vector<GraspRegion> regions = explore_cords(mesh, w_palm, explore, &explored);
+  const std::vector<GraspRegion> regions = explore_cords(mesh, w_palm, explore, &explored, collider.object_bvh());
   if (exploration) *exploration = explored;
   const std::vector<int> order = cord_region_order(regions, w_palm, explore);
   PlanResult result = plan_cord_grasps_from_regions(mesh, hand, collider, regions, params,

@@ -4,6 +4,7 @@
 #include <random>
 
 #include "cordgrasp/collision/bullet_hand_collider.h"
+#include "cordgrasp/core/explore_cords.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/shapes.h"
 #include "test_hands.h"
@@ -216,6 +217,24 @@ TEST(BulletCollider, DistanceLowerBoundNeverExceedsTheDistance) {
       EXPECT_LE(bound, prox->distance_m + 1e-9);
     }
   }
+}
+
+TEST(BulletCollider, SharesItsObjectBvhWithTheCordExploration) {
+  // The collider keeps the object's BVH (build_object_bvh) and the exploration run on it
+  // finds the regions it finds with a BVH of its own: one copy of a large scan, same plans.
+  const Mesh box = make_box_mesh(Eigen::Vector3d(0.06, 0.04, 0.03));
+  auto collider = make_bullet_hand_collider(one_link_hand(sphere_geometry(0.01)), box);
+  const std::shared_ptr<const MeshBvh> bvh = collider->object_bvh();
+  ASSERT_TRUE(bvh);
+  EXPECT_EQ(bvh->triangles.size(), box.triangles.size());
+  EXPECT_EQ(bvh.get(), collider->object_bvh().get());  // kept, not rebuilt per call
+  CordParams params;
+  params.sets = 4;
+  const auto own = explore_cords(box, 0.08, params);
+  const auto shared = explore_cords(box, 0.08, params, nullptr, bvh);
+  ASSERT_FALSE(own.empty());
+  ASSERT_EQ(own.size(), shared.size());
+  for (size_t k = 0; k < own.size(); ++k) EXPECT_EQ(own[k].chi_m2, shared[k].chi_m2) << k;
 }
 
 }  // namespace

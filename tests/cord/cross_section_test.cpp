@@ -85,6 +85,28 @@ TEST(MeshBvh, NodeBoxesAreExactlyTheBoundsOfTheirTriangles) {
   }
 }
 
+TEST(MeshBvh, ObjectBvhDropsZeroAreaTrianglesAndIndexesTheMeshTriangles) {
+  // A box with a zero-area triangle (repeated corner) and a sliver of collinear corners
+  // inserted between its faces.
+  Mesh mesh = make_box_mesh(Eigen::Vector3d(0.04, 0.03, 0.02));
+  const int n = static_cast<int>(mesh.triangles.size());
+  mesh.vertices.emplace_back(0.0, 0.0, 0.0);
+  mesh.vertices.emplace_back(0.01, 0.0, 0.0);
+  mesh.vertices.emplace_back(0.02, 0.0, 0.0);
+  const int v = static_cast<int>(mesh.vertices.size()) - 3;
+  mesh.triangles.insert(mesh.triangles.begin() + 3, Eigen::Vector3i(0, 1, 1));
+  mesh.triangles.insert(mesh.triangles.begin() + 7, Eigen::Vector3i(v, v + 1, v + 2));
+  const MeshBvh bvh = build_object_bvh(mesh);
+  ASSERT_EQ(static_cast<int>(bvh.triangles.size()), n);
+  std::vector<int> ids = bvh.triangle_ids;
+  for (size_t k = 0; k < bvh.triangles.size(); ++k)
+    EXPECT_EQ(bvh.triangles[k], mesh.triangles[static_cast<size_t>(bvh.triangle_ids[k])]) << k;
+  std::sort(ids.begin(), ids.end());
+  EXPECT_TRUE(std::adjacent_find(ids.begin(), ids.end()) == ids.end());
+  EXPECT_TRUE(std::find(ids.begin(), ids.end(), 3) == ids.end());  // the zero-area ones
+  EXPECT_TRUE(std::find(ids.begin(), ids.end(), 7) == ids.end());
+}
+
 TEST(PlaneCrossSection, SharedEdgesGiveOnePointPerCrossingOfAClosedSurface) {
   // A closed manifold: every crossing point is shared by exactly two segments.
   const Mesh sphere = make_sphere_mesh(0.04, 16, 32);

@@ -215,7 +215,9 @@ TEST(ExploreCords, TheDefaultFallbackFindsSetsOnASmallObjectAndRanksFullSetsFirs
     const GraspRegion& a = small[static_cast<size_t>(small_order[k - 1])];
     const GraspRegion& b = small[static_cast<size_t>(small_order[k])];
     ASSERT_LE(side_cords_missed(a), side_cords_missed(b)) << "at " << k;
-    if (side_cords_missed(a) == side_cords_missed(b)) EXPECT_LE(a.chi_m2, b.chi_m2) << k;
+    if (side_cords_missed(a) == side_cords_missed(b)) {
+      EXPECT_LE(a.chi_m2, b.chi_m2) << k;
+    }
   }
 }
 

@@ -141,7 +141,7 @@ void compare_with_oracle(const Mesh& mesh, int planes, bool include_case_ii, std
     const std::optional<FrontCord> fc = front_cord(object, t.p1, t.p2, t.p3);
     if (!fc || (fc->cord_case == CordCase::kII && !include_case_ii)) continue;
     const PlaneFrame& f = fc->frame;
-    const CrossSection cs = plane_cross_section(object.bvh, f);
+    const CrossSection cs = plane_cross_section(*object.bvh, f);
     const Eigen::Vector2d q1(0, 0), q2 = f.to_2d(t.p2), q3 = f.to_2d(t.p3);
     std::vector<Poly2> guides;
     if (fc->cord_case == CordCase::kI) guides.push_back({q1, q2, q3, q1});
@@ -152,7 +152,7 @@ void compare_with_oracle(const Mesh& mesh, int planes, bool include_case_ii, std
       Polyline3 exact3, guide3;
       for (const auto& q : *exact) exact3.push_back(f.to_3d(q));
       for (const auto& q : g) guide3.push_back(f.to_3d(q));
-      const auto sampled = tighten_cord_sampled(object.bvh, guide3, oracle);
+      const auto sampled = tighten_cord_sampled(*object.bvh, guide3, oracle);
       ASSERT_TRUE(sampled.has_value());
       EXPECT_LT(test::polyline_distance(exact3, *sampled), kOracleTol_m)
           << "plane " << compared << " guide of " << g.size() << " points";

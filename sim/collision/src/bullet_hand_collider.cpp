@@ -110,26 +110,19 @@ double point_triangle_distance2(const btVector3& p, const btVector3& a, const bt
   return (p - (a + ab * (vb * denom) + ac * (vc * denom))).length2();
 }
 
-// The object's triangles for the queries: core's BVH (build_mesh_bvh, median split, <= 4 per
-// leaf, corner-sum order: the planner's contacts keep their witnesses) over the non-degenerate
-// triangles, traversed with the oriented box of a link child:
+// The object's triangles for the queries: core's object BVH (build_object_bvh: median split,
+// <= 4 per leaf, corner-sum order: the planner's contacts keep their witnesses, over the
+// non-degenerate triangles; shared with the cord exploration), traversed with the oriented box
+// of a link child:
 // Bullet's own BVH only offers world-AABB queries, and a rotated phalanx's world AABB takes in
 // far more triangles than the phalanx itself.
 class ObjectTriangles {
  public:
-  explicit ObjectTriangles(const Mesh& object) {
-    Mesh usable;
-    usable.name = object.name;
-    usable.vertices = object.vertices;
-    usable.triangles.reserve(object.triangles.size());
-    for (const Eigen::Vector3i& t : object.triangles) {
-      const Eigen::Vector3d& a = object.vertices[t[0]];
-      const Eigen::Vector3d& b = object.vertices[t[1]];
-      const Eigen::Vector3d& c = object.vertices[t[2]];
-      if (!((b - a).cross(c - a).squaredNorm() <= 0.0)) usable.triangles.push_back(t);
-    }
-    bvh_ = build_mesh_bvh(usable, kLeafTriangles, MeshBvhSplit::kCornerSum);
-  }
+  explicit ObjectTriangles(const Mesh& object)
+      : shared_(std::make_shared<const MeshBvh>(build_object_bvh(object))), bvh_(*shared_) {}
+
+  /// The BVH, for the cord exploration to share.
+  const std::shared_ptr<const MeshBvh>& shared() const { return shared_; }
 
   bool empty() const { return bvh_.nodes.empty(); }
 
@@ -191,7 +184,8 @@ class ObjectTriangles {
  private:
   static constexpr int kLeafTriangles = 4;
   static constexpr int kStackSize = 64;
-  MeshBvh bvh_;  // corners are read through its vertex indices (no per-triangle copy)
+  std::shared_ptr<const MeshBvh> shared_;
+  const MeshBvh& bvh_;  // *shared_; corners are read through its vertex indices
 };
 
 // Closest points (or first penetration) of one convex child against the object's triangles.
@@ -309,6 +303,8 @@ class BulletHandCollider final : public HandObjectCollider {
   }
 
   int num_links() const override { return static_cast<int>(links_.size()); }
+
+  std::shared_ptr<const MeshBvh> object_bvh() const override { return triangles_->shared(); }
 
   bool has_geometry(int link) const override { return links_.at(link).compound != nullptr; }
 

@@ -1,9 +1,11 @@
 #pragma once
+#include <memory>
 #include <vector>
 
 #include "cordgrasp/core/cord_params.h"
 #include "cordgrasp/core/grasp_region.h"
 #include "cordgrasp/core/mesh.h"
+#include "cordgrasp/core/mesh_bvh.h"
 
 namespace cordgrasp {
 
@@ -28,9 +30,11 @@ struct ExplorationStats {
 /// iteration/time cap is hit, then local improvement; returns every valid set ranked by ascending
 /// χ (ties keep discovery order). Same params (seed) → identical regions, unless the time cap is
 /// hit. `palm_width_m` is W_palm (docs/algorithm.md §4) [m].
+/// `object_bvh`: the mesh's build_object_bvh when one exists (the collider's), else built.
 /// @throws std::invalid_argument for an empty mesh or palm_width_m ≤ 0.
 std::vector<GraspRegion> explore_cords(const Mesh& mesh, double palm_width_m,
                                        const CordParams& params = {},
-                                       ExplorationStats* stats = nullptr);
+                                       ExplorationStats* stats = nullptr,
+                                       std::shared_ptr<const MeshBvh> object_bvh = nullptr);
 
 }  // namespace cordgrasp

@@ -1,8 +1,11 @@
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <memory>
 #include <optional>
 #include <vector>
+
+#include "cordgrasp/core/mesh_bvh.h"
 
 namespace cordgrasp {
 
@@ -53,6 +56,10 @@ class HandObjectCollider {
   /// `max_distance_m` (penetrating pairs included, with negative distance); nullopt otherwise.
   virtual std::optional<LinkObjectProximity> link_object_proximity(int link,
                                                                    double max_distance_m) = 0;
+
+  /// The object's BVH (build_object_bvh) when the collider keeps one, for the cord exploration
+  /// to share instead of building its own; nullptr otherwise.
+  virtual std::shared_ptr<const MeshBvh> object_bvh() const { return nullptr; }
 };
 
 }  // namespace cordgrasp

@@ -39,4 +39,9 @@ enum class MeshBvhSplit {
 MeshBvh build_mesh_bvh(const Mesh& mesh, int max_leaf_triangles = 4,
                        MeshBvhSplit split = MeshBvhSplit::kCentroidThenIndex);
 
+/// The object's BVH that the cord exploration and the hand–object collider share (one copy
+/// for a scan of millions of triangles): the triangles of non-zero area, corner-sum order,
+/// at most 4 per leaf; triangle_ids index mesh.triangles. Empty when no triangle has an area.
+MeshBvh build_object_bvh(const Mesh& mesh);
+
 }  // namespace cordgrasp
