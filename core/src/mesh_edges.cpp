@@ -57,6 +57,10 @@ MeshEdges build_mesh_edges(const Mesh& mesh) {
   const auto by_hi = [](const Entry& x, const Entry& y) { return x.hi < y.hi; };
   out.tri_edge.assign(nt, {-1, -1, -1});
   out.uses.reserve(entries.size());
+  // A closed surface uses each edge twice: reserving half the uses avoids the growth copies
+  // (a scan of millions of triangles) in the common case.
+  out.edges.reserve(entries.size() / 2 + 1);
+  out.first_use.reserve(entries.size() / 2 + 2);
   for (int lo = 0; lo < out.welded_vertices; ++lo) {
     Entry* first = entries.data() + bucket[size_t(lo)];
     Entry* last = entries.data() + bucket[size_t(lo) + 1];
