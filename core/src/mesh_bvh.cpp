@@ -130,7 +130,10 @@ MeshBvh build_object_bvh(const Mesh& mesh) {
     usable.triangles.push_back(t);
     ids.push_back(static_cast<int>(k));
   }
-  MeshBvh bvh = build_mesh_bvh(usable, 4, MeshBvhSplit::kCornerSum);
+  const int leaf = static_cast<int>(usable.triangles.size()) > kLargeMeshTriangles
+                       ? kLargeMeshLeafTriangles
+                       : 4;
+  MeshBvh bvh = build_mesh_bvh(usable, leaf, MeshBvhSplit::kCornerSum);
   for (int& id : bvh.triangle_ids) id = ids[static_cast<size_t>(id)];
   return bvh;
 }

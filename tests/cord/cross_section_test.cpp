@@ -107,6 +107,22 @@ TEST(MeshBvh, ObjectBvhDropsZeroAreaTrianglesAndIndexesTheMeshTriangles) {
   EXPECT_TRUE(std::find(ids.begin(), ids.end(), 7) == ids.end());
 }
 
+TEST(MeshBvh, ObjectBvhOfALargeScanHasAQuarterOfTheNodes) {
+  // Above kLargeMeshTriangles the shared BVH keeps up to kLargeMeshLeafTriangles per leaf:
+  // its nodes (112 B each) are the bulk of a scan's memory. A 250 k-triangle grid sphere.
+  const Mesh small = make_sphere_mesh(0.05, 50, 100);
+  const Mesh large = make_sphere_mesh(0.05, 350, 360);
+  ASSERT_LE(static_cast<int>(small.triangles.size()), kLargeMeshTriangles);
+  ASSERT_GT(static_cast<int>(large.triangles.size()), kLargeMeshTriangles);
+  const MeshBvh s = build_object_bvh(small), l = build_object_bvh(large);
+  EXPECT_GT(s.nodes.size(), small.triangles.size() / 2);
+  EXPECT_LT(l.nodes.size(), large.triangles.size() / 4);
+  int largest_leaf = 0;
+  for (const MeshBvh::Node& n : l.nodes) largest_leaf = std::max(largest_leaf, n.count);
+  EXPECT_LE(largest_leaf, kLargeMeshLeafTriangles);
+  EXPECT_EQ(l.triangles.size(), large.triangles.size());
+}
+
 TEST(PlaneCrossSection, SharedEdgesGiveOnePointPerCrossingOfAClosedSurface) {
   // A closed manifold: every crossing point is shared by exactly two segments.
   const Mesh sphere = make_sphere_mesh(0.04, 16, 32);

@@ -39,9 +39,15 @@ enum class MeshBvhSplit {
 MeshBvh build_mesh_bvh(const Mesh& mesh, int max_leaf_triangles = 4,
                        MeshBvhSplit split = MeshBvhSplit::kCentroidThenIndex);
 
+/// Triangles above which build_object_bvh puts up to kLargeMeshLeafTriangles in a leaf.
+constexpr int kLargeMeshTriangles = 200000;
+/// Leaf size of a large mesh's object BVH: a quarter of the nodes (112 B each) of 4 per leaf.
+constexpr int kLargeMeshLeafTriangles = 16;
+
 /// The object's BVH that the cord exploration and the hand–object collider share (one copy
 /// for a scan of millions of triangles): the triangles of non-zero area, corner-sum order,
-/// at most 4 per leaf; triangle_ids index mesh.triangles. Empty when no triangle has an area.
+/// at most 4 per leaf (kLargeMeshLeafTriangles above kLargeMeshTriangles: raw scans);
+/// triangle_ids index mesh.triangles. Empty when no triangle has an area.
 MeshBvh build_object_bvh(const Mesh& mesh);
 
 }  // namespace cordgrasp
