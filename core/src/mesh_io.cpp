@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -276,13 +277,23 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   // file with fewer faces than its header, a malformed PLY) or index past the vertices, and
   // flag polygons in a mesh that holds none; assimp's triangulation asserts (aborting the
   // process) on the first and the last. Each mesh's primitive types are set from its faces.
+  // PLY and OFF hold every face's indices in the file itself, a byte or more each: a reader
+  // that fills a longer face (ASCII PLY "33030 2 1") would have triangulation take seconds.
+  std::string lower_ext = ext;
+  for (char& c : lower_ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const bool indices_in_file = lower_ext == ".ply" || lower_ext == ".off";
   const aiScene* scene = importer.ReadFile(path, 0);
   if (scene && scene->mRootNode) {
+    uintmax_t indices = 0;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
       aiMesh& am = *scene->mMeshes[m];
       unsigned types = 0;
       for (unsigned f = 0; f < am.mNumFaces; ++f) {
         const aiFace& face = am.mFaces[f];
+        indices += face.mNumIndices;
+        if (indices_in_file && indices > file_bytes)
+          fail(path, "its faces list more vertex indices than the file's " +
+                         std::to_string(file_bytes) + " bytes could hold");
         if (face.mNumIndices == 0 || !face.mIndices) fail(path, "a face without vertices");
         for (unsigned k = 0; k < face.mNumIndices; ++k)
           if (face.mIndices[k] >= am.mNumVertices) fail(path, "a face index past the vertices");
