@@ -76,6 +76,14 @@ HoldProbabilityParams hold_test_params(double min_hold_probability, int max_draw
   return out;
 }
 
+HoldProbabilityParams confirmation_test(const HoldProbabilityParams& test) {
+  // Any fixed odd multiplier and offset give draws unrelated to the first test's.
+  constexpr std::uint64_t kConfirmationSeedMultiplier = 0x9E3779B97F4A7C15ULL;
+  HoldProbabilityParams out = test;
+  out.seed = test.seed * kConfirmationSeedMultiplier + 1;
+  return out;
+}
+
 HoldVerdict hold_verdict(const ProportionInterval& interval, double threshold) {
   if (interval.low > threshold) return HoldVerdict::kAbove;
   if (interval.high < threshold) return HoldVerdict::kBelow;

@@ -236,14 +236,32 @@ ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, Pla
         interrupted = true;
         break;
       }
-      const bool accepted = h.verdict == HoldVerdict::kAbove;
+      if (h.verdict != HoldVerdict::kAbove) {
+        say("candidate " + std::to_string(candidate) + ": " + hold_probability_line(h));
+        continue;
+      }
+      // Confirmation with draws of its own: among many candidates, some pass the first test
+      // on lucky draws (the winner's curse); the second test's draws do not know the first's
+      // selection, and its P(held) is the one recorded and ranked.
+      const auto confirmation_start = Clock::now();
+      const HoldProbability c =
+          estimate_hold_probability(mesh, hand, *g, candidate, sim, tests, v.uncertainty,
+                                    confirmation_test(hold_test), cancel, jobs);
+      vs.trials_run += c.simulations;
+      vs.physics_s += seconds_since(confirmation_start);
+      if (!c.complete) {
+        interrupted = true;
+        break;
+      }
+      const bool accepted = c.verdict == HoldVerdict::kAbove;
       say("candidate " + std::to_string(candidate) + ": " + hold_probability_line(h) +
+          "; confirmation: " + hold_probability_line(c) +
           (accepted ? ", accepted (" + std::to_string(accepted_grasps.size() + 1) + " / " +
                           std::to_string(wanted) + ")"
                     : std::string()));
       if (!accepted) continue;
-      gv.held_trials = h.held;
-      gv.trials = static_cast<int>(h.draws.size());
+      gv.held_trials = c.held;
+      gv.trials = static_cast<int>(c.draws.size());
     } else {
       // Nudged trials, `jobs` at a time, until the verdict is decided; the record keeps the
       // trials a one-at-a-time run would have made, so it does not depend on `jobs`.

@@ -196,6 +196,22 @@ TEST(StopDrawing, StopsOnceTheIntervalIsDecidedAndNotBeforeTheMinimum) {
   EXPECT_EQ(hold_verdict(wilson_interval(17, 20), 0.8), HoldVerdict::kUndecided);
 }
 
+TEST(ConfirmationTest, KeepsTheTestAndDrawsOtherConditions) {
+  // The confirmation of an accepted grasp: the same threshold and draws, none of the first
+  // test's conditions, the same every time.
+  const HoldProbabilityParams first = hold_test_params(0.8, 20, 7);
+  const HoldProbabilityParams second = confirmation_test(first);
+  EXPECT_EQ(second.min_hold_probability, first.min_hold_probability);
+  EXPECT_EQ(second.max_draws, first.max_draws);
+  EXPECT_EQ(second.min_draws, first.min_draws);
+  EXPECT_EQ(second.seed, confirmation_test(first).seed);
+  for (int t = 0; t < first.max_draws; ++t)
+    for (int u = 0; u < first.max_draws; ++u)
+      EXPECT_NE(draw_uncertainty(UncertaintyParams{}, first.seed, 3, t).mu_factor,
+                draw_uncertainty(UncertaintyParams{}, second.seed, 3, u).mu_factor)
+          << t << " " << u;
+}
+
 TEST(FailureSensitivity, NamesTheFactorWhoseDrawsSetTheFailedTrialsApart) {
   std::vector<UncertainDrawResult> draws;
   for (int t = 0; t < 12; ++t) {

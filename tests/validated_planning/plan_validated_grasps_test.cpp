@@ -199,12 +199,23 @@ TEST(PlanValidatedGrasps, UnderUncertaintyAcceptsDecidedHoldProbabilitiesRankedT
   box.v.min_hold_probability = kThreshold;
   box.v.max_draws = kMaxDraws;
   const SimLevelInputs in(box);
+  std::vector<std::string> lines;
   const auto plan = [&](int jobs) {
+    lines.clear();
     return plan_validated_grasps(box.mesh, box.hand, PlannerKind::kCord, in.plan, in.cord, box.v,
-                                 in.sim, jobs);
+                                 in.sim, jobs,
+                                 [&](const std::string& line) { lines.push_back(line); });
   };
   const ValidatedPlan one = plan(1);
   ASSERT_FALSE(one.grasps.empty());
+  // Every acceptance followed a second test on draws of its own (the winner's curse).
+  int accepted_lines = 0;
+  for (const std::string& line : lines)
+    if (line.find(", accepted (") != std::string::npos) {
+      ++accepted_lines;
+      EXPECT_NE(line.find("; confirmation: "), std::string::npos) << line;
+    }
+  EXPECT_EQ(accepted_lines, static_cast<int>(one.grasps.size()));
   const std::vector<GraspValidation>& record = one.validation.grasps;
   ASSERT_EQ(record.size(), one.grasps.size());
   double last_p = 1.0;

@@ -18,7 +18,8 @@ void add_uncertainty_options(CLI::App* cmd, ValidationParams& v, const char* use
   const std::string accept =
       "Validated planning: accept a candidate held as planned when its " + model +
       " is decided above --min-hold-probability within the settings' validation.max_draws "
-      "draws; rank the accepted grasps by it (default: none, the nudged trials)";
+      "draws, then again on draws of its own; rank the accepted grasps by the second "
+      "(default: none, the nudged trials)";
   cmd->add_option_function<std::string>(
          "--uncertainty",
          [&v](const std::string& choice) { v.uncertainty = uncertainty_settings(choice); },

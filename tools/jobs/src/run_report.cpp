@@ -64,7 +64,7 @@ std::string run_report_markdown(const RunReport& rep) {
       md << "- Validated planning: accepted when held as planned and P(held) under uncertainty "
             "lies above "
          << num(v.min_hold_probability, "%.2f") << " (Wilson 95 %, at most " << v.max_draws
-         << " draws), ranked by P(held)";
+         << " draws, then again on other draws), ranked by P(held)";
     md << " ("
        << v.tests << ", " << to_string(v.protocol) << " protocol), squeeze shift "
        << "limit " << num(1e3 * v.squeeze_shift_limit_m, "%.0f") << " mm, budget "

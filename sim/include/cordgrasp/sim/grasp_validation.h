@@ -32,7 +32,8 @@ struct ValidationParams {
   /// default): trials and min_held decide. Otherwise a candidate held as planned is accepted
   /// when the Wilson 95 % interval of its P(held) lies above min_hold_probability, within
   /// max_draws draws (seeded by trial_seed and the candidate's index), and the accepted grasps
-  /// are ranked by P(held).
+  /// are ranked by P(held). A candidate decided above is accepted only if a second test on
+  /// draws of its own (confirmation_test) is decided above too; its P(held) is recorded.
   UncertaintyParams uncertainty = uncertainty_none();
   double min_hold_probability = 0.8;  ///< acceptance threshold of P(held) [-]
   int max_draws = 20;                 ///< draws per candidate at most

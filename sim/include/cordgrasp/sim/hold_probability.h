@@ -48,6 +48,9 @@ void check_hold_test(const UncertaintyParams& uncertainty, const HoldProbability
 HoldProbabilityParams hold_test_params(double min_hold_probability, int max_draws,
                                        std::uint64_t seed);
 
+/// The test that confirms an accepted grasp: `test` with a seed of its own (other draws).
+HoldProbabilityParams confirmation_test(const HoldProbabilityParams& test);
+
 /// Where the 95 % interval lies against the threshold.
 enum class HoldVerdict {
   kUndecided,  ///< the interval contains the threshold
