@@ -165,7 +165,11 @@ std::string point_text(const Eigen::Vector3d& p) {
 void check_ply_header(const std::string& path, uintmax_t file_bytes) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
-  if (!std::getline(in, line) || line.compare(0, 3, "ply") != 0) return;
+  // The magic may follow blank lines and spaces: assimp's reader skips them too.
+  size_t magic = std::string::npos;
+  while (magic == std::string::npos && std::getline(in, line))
+    magic = line.find_first_not_of(" \t\r\v\f");
+  if (magic == std::string::npos || line.compare(magic, 3, "ply") != 0) return;
   while (std::getline(in, line)) {
     std::istringstream words(line);
     std::string keyword, name;
