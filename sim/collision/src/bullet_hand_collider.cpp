@@ -111,25 +111,24 @@ double point_triangle_distance2(const btVector3& p, const btVector3& a, const bt
 }
 
 // The object's triangles for the queries: core's object BVH (build_object_bvh: median split,
-// <= 4 per leaf, corner-sum order: the planner's contacts keep their witnesses, over the
-// non-degenerate triangles; shared with the cord exploration), traversed with the oriented box
-// of a link child:
+// corner-sum order, so the planner's contacts keep their witnesses, over the non-degenerate
+// triangles; shared with the cord exploration), traversed with the oriented box of a link child:
 // Bullet's own BVH only offers world-AABB queries, and a rotated phalanx's world AABB takes in
 // far more triangles than the phalanx itself.
 class ObjectTriangles {
  public:
   explicit ObjectTriangles(const Mesh& object)
-      : shared_(std::make_shared<const MeshBvh>(build_object_bvh(object))), bvh_(*shared_) {}
+      : bvh_(std::make_shared<const MeshBvh>(build_object_bvh(object))) {}
 
   /// The BVH, for the cord exploration to share.
-  const std::shared_ptr<const MeshBvh>& shared() const { return shared_; }
+  const std::shared_ptr<const MeshBvh>& shared() const { return bvh_; }
 
-  bool empty() const { return bvh_.nodes.empty(); }
+  bool empty() const { return bvh_->nodes.empty(); }
 
   /// Bounds of the usable triangles' corners, widened by `margin_m` (as Bullet's triangle-mesh
   /// shape computes its AABB: centre ± (half extent + margin)). Requires !empty().
   Aabb3 aabb(double margin_m) const {
-    const MeshBvh::Node& root = bvh_.nodes.front();
+    const MeshBvh::Node& root = bvh_->nodes.front();
     const btVector3 center = to_bt(root.center);
     const btVector3 half = to_bt(root.half) + btVector3(margin_m, margin_m, margin_m);
     return {center - half, center + half};
@@ -140,7 +139,7 @@ class ObjectTriangles {
   template <class F>
   void query(const btTransform& X_OC, const btVector3& lo, const btVector3& hi,
              const btVector3& w_lo, const btVector3& w_hi, double pad, F&& f) const {
-    if (bvh_.nodes.empty()) return;
+    if (bvh_->nodes.empty()) return;
     const btTransform X_CO = X_OC.inverse();
     const btMatrix3x3& R = X_CO.getBasis();
     const btMatrix3x3 R_abs = R.absolute();
@@ -152,7 +151,7 @@ class ObjectTriangles {
     stack[top++] = 0;
     while (top > 0) {
       const int index = stack[--top];
-      const MeshBvh::Node& node = bvh_.nodes[static_cast<size_t>(index)];
+      const MeshBvh::Node& node = bvh_->nodes[static_cast<size_t>(index)];
       if (node.lo.x() > qhi.x() || node.hi.x() < qlo.x() || node.lo.y() > qhi.y() ||
           node.hi.y() < qlo.y() || node.lo.z() > qhi.z() || node.hi.z() < qlo.z())
         continue;
@@ -166,10 +165,10 @@ class ObjectTriangles {
       if (separated) continue;
       if (node.count > 0) {
         for (int k = node.first; k < node.first + node.count; ++k) {
-          const Eigen::Vector3i& t = bvh_.triangles[static_cast<size_t>(k)];
-          if (f(to_bt(bvh_.vertices[static_cast<size_t>(t[0])]),
-                to_bt(bvh_.vertices[static_cast<size_t>(t[1])]),
-                to_bt(bvh_.vertices[static_cast<size_t>(t[2])])))
+          const Eigen::Vector3i& t = bvh_->triangles[static_cast<size_t>(k)];
+          if (f(to_bt(bvh_->vertices[static_cast<size_t>(t[0])]),
+                to_bt(bvh_->vertices[static_cast<size_t>(t[1])]),
+                to_bt(bvh_->vertices[static_cast<size_t>(t[2])])))
             return;
         }
       } else {
@@ -182,10 +181,8 @@ class ObjectTriangles {
   }
 
  private:
-  static constexpr int kLeafTriangles = 4;
   static constexpr int kStackSize = 64;
-  std::shared_ptr<const MeshBvh> shared_;
-  const MeshBvh& bvh_;  // *shared_; corners are read through its vertex indices
+  std::shared_ptr<const MeshBvh> bvh_;  // corners are read through its vertex indices
 };
 
 // Closest points (or first penetration) of one convex child against the object's triangles.
