@@ -25,6 +25,7 @@
 #include "cordgrasp/core/enum_names.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/mesh_properties.h"
+#include "ply_check.h"
 #include "weld_table.h"
 
 namespace cordgrasp {
@@ -158,33 +159,6 @@ std::string point_text(const Eigen::Vector3d& p) {
   return out.str();
 }
 
-// assimp 5.2's PLY reader never returns from a header without an "end_header" line, and
-// allocates (and fills) an element's count from the header before reading it: a file that
-// starts like PLY must have that line (alone, spaces, tabs and CR aside), and no element may
-// claim more entries than the file has bytes.
-void check_ply_header(const std::string& path, uintmax_t file_bytes) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  // The magic may follow blank lines and spaces: assimp's reader skips them too.
-  size_t magic = std::string::npos;
-  while (magic == std::string::npos && std::getline(in, line))
-    magic = line.find_first_not_of(" \t\r\v\f");
-  if (magic == std::string::npos || line.compare(magic, 3, "ply") != 0) return;
-  while (std::getline(in, line)) {
-    std::istringstream words(line);
-    std::string keyword, name;
-    unsigned long long count = 0;
-    if (words >> keyword >> name >> count && keyword == "element" && count > file_bytes)
-      fail(path, "PLY element '" + name + "' claims " + std::to_string(count) +
-                     " entries, more than the file's " + std::to_string(file_bytes) + " bytes");
-    const size_t begin = line.find_first_not_of(" \t\r");
-    const size_t end = line.find_last_not_of(" \t\r");
-    if (begin != std::string::npos && line.compare(begin, end + 1 - begin, "end_header") == 0)
-      return;
-  }
-  fail(path, "PLY header without an 'end_header' line");
-}
-
 // assimp 5.2's OFF reader crashes on a face line with no vertices ("0") and on one that does
 // not hold its vertex count's indices ("3ply"): a file that starts like OFF must give each face
 // line a vertex count >= 1 and that many whole-number indices below its vertex count (colours
@@ -267,7 +241,8 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   }
   const uintmax_t file_bytes = fs::file_size(path, ec);
   if (file_bytes == 0 && !ec) fail(path, "empty file (0 bytes)");
-  check_ply_header(path, file_bytes);
+  if (const std::string problem = detail::ply_problem(path, file_bytes); !problem.empty())
+    fail(path, problem);
   check_off_faces(path, file_bytes);
   Assimp::Importer importer;
   std::string ext = fs::path(path).extension().string();
