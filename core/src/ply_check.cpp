@@ -3,17 +3,37 @@
 #include <algorithm>
 #include <cstring>
 #include <fstream>
-#include <limits>
-#include <sstream>
+#include <set>
 #include <vector>
 
 namespace cordgrasp::detail {
 namespace {
 
+enum class Kind { kUnsigned, kSigned, kReal };
+
+struct PlyType {
+  const char* name;
+  int bytes;
+  Kind kind;
+};
+
+constexpr PlyType kPlyTypes[] = {
+    {"char", 1, Kind::kSigned},    {"int8", 1, Kind::kSigned},     {"uchar", 1, Kind::kUnsigned},
+    {"uint8", 1, Kind::kUnsigned}, {"short", 2, Kind::kSigned},    {"int16", 2, Kind::kSigned},
+    {"ushort", 2, Kind::kUnsigned}, {"uint16", 2, Kind::kUnsigned}, {"int", 4, Kind::kSigned},
+    {"int32", 4, Kind::kSigned},   {"uint", 4, Kind::kUnsigned},   {"uint32", 4, Kind::kUnsigned},
+    {"float", 4, Kind::kReal},     {"float32", 4, Kind::kReal},    {"double", 8, Kind::kReal},
+    {"float64", 8, Kind::kReal}};
+
+const PlyType* find_type(const std::string& name) {
+  for (const PlyType& t : kPlyTypes)
+    if (name == t.name) return &t;
+  return nullptr;
+}
+
 struct PlyProperty {
-  int count_bytes = 0;  // 0: a scalar; else a list whose count takes this many bytes (binary)
-  bool count_signed = false;
-  int value_bytes = 0;  // a scalar's or a list item's size in a binary file
+  const PlyType* count = nullptr;  // a list's count type; null for a scalar
+  const PlyType* value = nullptr;  // the scalar's or the list items' type
 };
 
 struct PlyElement {
@@ -22,110 +42,155 @@ struct PlyElement {
   std::vector<PlyProperty> properties;
 };
 
-// Size of a PLY scalar type in bytes (0: unknown), and whether it is signed.
-int type_bytes(const std::string& type, bool* is_signed = nullptr) {
-  struct Type {
-    const char* name;
-    int bytes;
-    bool is_signed;
-  };
-  static const Type kTypes[] = {{"char", 1, true},     {"int8", 1, true},     {"uchar", 1, false},
-                                {"uint8", 1, false},   {"short", 2, true},    {"int16", 2, true},
-                                {"ushort", 2, false},  {"uint16", 2, false},  {"int", 4, true},
-                                {"int32", 4, true},    {"uint", 4, false},    {"uint32", 4, false},
-                                {"float", 4, true},    {"float32", 4, true},  {"double", 8, true},
-                                {"float64", 8, true}};
-  for (const Type& t : kTypes)
-    if (type == t.name) {
-      if (is_signed) *is_signed = t.is_signed;
-      return t.bytes;
-    }
-  return 0;
+// What ends a line for assimp's PLY reader besides a line feed.
+const std::string kLineEnds("\r\f\0", 3);
+
+std::vector<std::string> split_words(const std::string& line) {
+  std::vector<std::string> words;
+  for (size_t b = line.find_first_not_of(" \t"); b != std::string::npos;) {
+    const size_t e = std::min(line.size(), line.find_first_of(" \t", b));
+    words.push_back(line.substr(b, e - b));
+    b = line.find_first_not_of(" \t", e);
+  }
+  return words;
 }
 
-std::string too_many(const std::string& element, unsigned long long entry, const std::string& count,
-                     std::uintmax_t bytes) {
-  return "PLY element '" + element + "' entry " + std::to_string(entry) + " lists " +
-         count.substr(0, 24) + (count.size() > 24 ? "..." : "") + " values, more than the " +
-         std::to_string(bytes) + " bytes left in the file";
+bool all_digits(const char* b, const char* e) {
+  if (b == e) return false;
+  for (; b != e; ++b)
+    if (*b < '0' || *b > '9') return false;
+  return true;
 }
 
-// ASCII body: one element entry per line (blank lines skipped); a list's count is its token's
-// leading digits. Stops quietly where the body no longer matches the header (assimp's to judge).
-std::string check_ascii_body(std::istream& in, const std::vector<PlyElement>& elements,
-                             std::uintmax_t file_bytes) {
+// Whether the text is one whole value of the kind, as assimp's readers (strtoul10, strtol10,
+// fast_atoreal_move) would consume it to its end.
+bool is_value(const char* b, const char* e, Kind kind) {
+  if (kind == Kind::kUnsigned) return all_digits(b, e);
+  if (b != e && (*b == '-' || *b == '+')) ++b;
+  if (kind == Kind::kSigned) return all_digits(b, e);
+  const char* digits = b;
+  while (b != e && *b >= '0' && *b <= '9') ++b;
+  bool mantissa = b != digits;
+  if (b != e && *b == '.') {
+    const char* fraction = ++b;
+    while (b != e && *b >= '0' && *b <= '9') ++b;
+    mantissa |= b != fraction;
+  }
+  if (!mantissa) return false;
+  if (b != e && (*b == 'e' || *b == 'E')) {
+    ++b;
+    if (b != e && (*b == '-' || *b == '+')) ++b;
+    return all_digits(b, e);
+  }
+  return b == e;
+}
+
+// Up to 24 characters of file text for a message, bytes outside printable ASCII as '?'.
+std::string quoted(const char* b, const char* e) {
+  std::string text = "'";
+  for (const char* c = b; c != e && c != b + 24; ++c) text += (*c >= 0x20 && *c < 0x7f) ? *c : '?';
+  return text + (e - b > 24 ? "...'" : "'");
+}
+std::string quoted(const std::string& s) { return quoted(s.data(), s.data() + s.size()); }
+
+std::string at_line(size_t line) { return "PLY line " + std::to_string(line) + ": "; }
+
+std::string entry_of(const PlyElement& element, unsigned long long entry) {
+  return "element " + quoted(element.name) + " entry " + std::to_string(entry);
+}
+
+// ASCII body: one entry per line, its values separated by spaces or tabs, each a whole number
+// of its type; a list's count no more than the values left on its line.
+std::string check_ascii_body(std::istream& in, size_t line_number,
+                             const std::vector<PlyElement>& elements) {
   std::string line;
-  std::uintmax_t at = in.tellg() < 0 ? file_bytes : std::uintmax_t(in.tellg());
-  for (const PlyElement& element : elements) {
-    bool has_list = false;
-    for (const PlyProperty& p : element.properties) has_list |= p.count_bytes > 0;
+  for (const PlyElement& element : elements)
     for (unsigned long long i = 0; i < element.count; ++i) {
-      do {
-        if (!std::getline(in, line)) return {};
-        at += line.size() + 1;
-      } while (line.find_first_not_of(" \t\r\v\f") == std::string::npos);
-      if (!has_list) continue;
-      const std::uintmax_t left = file_bytes - std::min(file_bytes, at);
+      ++line_number;
+      if (!std::getline(in, line)) return {};  // a short file: assimp's to judge
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      // assimp reads the body line by line, a CR, NUL or form feed also ending a line, and skips
+      // some blank lines but not others: such lines would shift its entries against these.
+      if (line.find_first_of(kLineEnds) != std::string::npos)
+        return at_line(line_number) + "a carriage return, form feed or NUL inside a line";
       const char* c = line.c_str();
-      auto next_token = [&c](const char** begin) {
-        while (*c && std::strchr(" \t\r\v\f", *c)) ++c;
-        *begin = c;
-        while (*c && !std::strchr(" \t\r\v\f", *c)) ++c;
-        return c > *begin;
+      const char* end = c + line.size();
+      auto next = [&c, end](const char** b, const char** e) {
+        while (c != end && (*c == ' ' || *c == '\t')) ++c;
+        *b = c;
+        while (c != end && *c != ' ' && *c != '\t') ++c;
+        *e = c;
+        return *e != *b;
       };
+      size_t values_left = 0;
+      for (const char *b, *e; next(&b, &e);) ++values_left;
+      if (values_left == 0)
+        return at_line(line_number) + "blank where " + entry_of(element, i) + " should be";
+      c = line.c_str();
       for (const PlyProperty& p : element.properties) {
-        const char* token = nullptr;
-        if (!next_token(&token)) break;
-        if (p.count_bytes == 0) continue;
-        const char* digits_end = token;
-        while (*digits_end >= '0' && *digits_end <= '9') ++digits_end;
-        const std::string digits(token, digits_end);
-        // The values of this entry lie on its line: a count past the line's bytes left and
-        // the file's is what made assimp reserve gigabytes.
-        if (digits.size() > 18 || (!digits.empty() && std::stoull(digits) > left + line.size()))
-          return too_many(element.name, i, digits, left + line.size());
-        const unsigned long long n = digits.empty() ? 0 : std::stoull(digits);
-        for (unsigned long long k = 0; k < n && next_token(&token); ++k) {
+        const char* b = nullptr;
+        const char* e = nullptr;
+        if (!next(&b, &e))
+          return at_line(line_number) + entry_of(element, i) + " has fewer values than its properties";
+        --values_left;
+        if (!p.count) {
+          if (!is_value(b, e, p.value->kind))
+            return at_line(line_number) + quoted(b, e) + " is not a " + p.value->name + " (" +
+                 entry_of(element, i) + ")";
+          continue;
+        }
+        if (!is_value(b, e, Kind::kUnsigned))
+          return at_line(line_number) + quoted(b, e) + " is not a list count (" +
+                 entry_of(element, i) + ")";
+        unsigned long long n = 0;
+        for (const char* d = b; d != e && n <= values_left; ++d) n = 10 * n + unsigned(*d - '0');
+        if (n > values_left)
+          return at_line(line_number) + entry_of(element, i) + " lists " + quoted(b, e) +
+                 " values, more than the " + std::to_string(values_left) + " on its line";
+        for (unsigned long long k = 0; k < n; ++k) {
+          next(&b, &e);
+          --values_left;
+          if (!is_value(b, e, p.value->kind))
+            return at_line(line_number) + quoted(b, e) + " is not a " + p.value->name + " (" +
+                 entry_of(element, i) + ")";
         }
       }
     }
-  }
   return {};
 }
 
 template <typename T>
-T read_as(const unsigned char* bytes, int size, bool swap) {
-  unsigned char b[8];
-  for (int k = 0; k < size; ++k) b[k] = bytes[swap ? size - 1 - k : k];
+long long read_count(const unsigned char* raw, bool swap) {
+  unsigned char b[sizeof(T)];
+  for (size_t k = 0; k < sizeof(T); ++k) b[k] = raw[swap ? sizeof(T) - 1 - k : k];
   T value;
   std::memcpy(&value, b, sizeof(T));
-  return value;
+  return static_cast<long long>(value);
 }
 
-// Binary body: a list's count read in its type and the file's byte order.
-std::string check_binary_body(std::istream& in, const std::vector<PlyElement>& elements,
-                              std::uintmax_t file_bytes, bool big_endian) {
-  // Lists with a count of one byte cannot ask for much: only walk up to the last element
-  // holding a wider count.
-  size_t last = elements.size();
+// Binary body: each list's count, read in its type and the file's byte order, is >= 0 and its
+// values fit in the bytes left. Elements after the last list that could ask for much (a count
+// wider than a byte, or signed) need no walk.
+std::string check_binary_body(std::istream& in, std::uintmax_t at,
+                              const std::vector<PlyElement>& elements, std::uintmax_t file_bytes,
+                              bool big_endian) {
+  size_t walk_to = 0;
   for (size_t e = 0; e < elements.size(); ++e)
     for (const PlyProperty& p : elements[e].properties)
-      if (p.count_bytes > 1) last = e;
-  if (last == elements.size()) return {};
+      if (p.count && (p.count->bytes > 1 || p.count->kind == Kind::kSigned)) walk_to = e + 1;
   const uint16_t probe = 1;
   unsigned char first_byte;
   std::memcpy(&first_byte, &probe, 1);
   const bool swap = big_endian == (first_byte == 1);
-  std::uintmax_t at = in.tellg() < 0 ? file_bytes : std::uintmax_t(in.tellg());
-  for (size_t e = 0; e <= last; ++e) {
+  for (size_t e = 0; e < walk_to; ++e) {
     const PlyElement& element = elements[e];
     bool has_list = false;
     std::uintmax_t stride = 0;
     for (const PlyProperty& p : element.properties) {
-      has_list |= p.count_bytes > 0;
-      stride += p.value_bytes;
+      has_list |= p.count != nullptr;
+      stride += p.value->bytes;
     }
-    if (!has_list) {  // fixed-size entries: skip them at once
+    if (!has_list) {  // entries of one size: skip them at once
       if (stride != 0 && element.count > (file_bytes - at) / stride) return {};
       at += element.count * stride;
       in.ignore(std::streamsize(element.count * stride));
@@ -133,26 +198,24 @@ std::string check_binary_body(std::istream& in, const std::vector<PlyElement>& e
     }
     for (unsigned long long i = 0; i < element.count; ++i)
       for (const PlyProperty& p : element.properties) {
-        if (p.count_bytes == 0) {
-          if (!in.ignore(p.value_bytes)) return {};
-          at += p.value_bytes;
+        if (!p.count) {
+          if (!in.ignore(p.value->bytes)) return {};
+          at += p.value->bytes;
           continue;
         }
-        unsigned char raw[8];
-        if (!in.read(reinterpret_cast<char*>(raw), p.count_bytes)) return {};
-        at += p.count_bytes;
-        long long n = 0;
-        switch (p.count_bytes) {
-          case 1: n = p.count_signed ? read_as<int8_t>(raw, 1, swap) : read_as<uint8_t>(raw, 1, swap); break;
-          case 2: n = p.count_signed ? read_as<int16_t>(raw, 2, swap) : read_as<uint16_t>(raw, 2, swap); break;
-          case 4: n = p.count_signed ? read_as<int32_t>(raw, 4, swap) : read_as<uint32_t>(raw, 4, swap); break;
-          default: return {};  // a float count: assimp's to judge
-        }
+        unsigned char raw[4];
+        if (!in.read(reinterpret_cast<char*>(raw), p.count->bytes)) return {};
+        at += p.count->bytes;
+        const bool s = p.count->kind == Kind::kSigned;
+        const long long n = p.count->bytes == 1 ? (s ? read_count<int8_t>(raw, swap) : read_count<uint8_t>(raw, swap))
+                            : p.count->bytes == 2 ? (s ? read_count<int16_t>(raw, swap) : read_count<uint16_t>(raw, swap))
+                                                  : (s ? read_count<int32_t>(raw, swap) : read_count<uint32_t>(raw, swap));
         const std::uintmax_t left = file_bytes - std::min(file_bytes, at);
-        if (n < 0 || std::uintmax_t(n) * std::uintmax_t(p.value_bytes) > left)
-          return too_many(element.name, i, std::to_string(n), left);
-        if (!in.ignore(std::streamsize(n * p.value_bytes))) return {};
-        at += std::uintmax_t(n) * p.value_bytes;
+        if (n < 0 || std::uintmax_t(n) * std::uintmax_t(p.value->bytes) > left)
+          return "PLY " + entry_of(element, i) + " lists " + std::to_string(n) +
+                 " values, more than the " + std::to_string(left) + " bytes left in the file";
+        if (!in.ignore(std::streamsize(n * p.value->bytes))) return {};
+        at += std::uintmax_t(n) * p.value->bytes;
       }
   }
   return {};
@@ -164,52 +227,84 @@ std::string ply_problem(const std::string& path, std::uintmax_t file_bytes) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
   // The magic may follow blank lines and spaces: assimp's reader skips them too.
-  size_t magic = std::string::npos;
-  while (magic == std::string::npos && std::getline(in, line))
+  size_t magic = std::string::npos, line_number = 0;
+  while (magic == std::string::npos && std::getline(in, line)) {
+    ++line_number;
     magic = line.find_first_not_of(" \t\r\v\f");
+  }
   if (magic == std::string::npos || line.compare(magic, 3, "ply") != 0) return {};
+  // assimp reads the header by its own rules (a comment can open an element, an unknown type
+  // ends an element's properties, a CR or NUL ends a line): a header it could read otherwise
+  // than this one is refused, so that the body below is walked as assimp walks it.
   std::string format;
   std::vector<PlyElement> elements;
-  bool layout_known = true;  // every property's type understood
+  std::set<std::string> names;
   while (std::getline(in, line)) {
-    std::istringstream words(line);
-    std::string keyword;
-    words >> keyword;
+    ++line_number;
+    const bool crlf = !line.empty() && line.back() == '\r';
+    if (crlf) line.pop_back();
+    if (line.find_first_of(kLineEnds) != std::string::npos)
+      return at_line(line_number) + "a carriage return, form feed or NUL inside the header";
+    const std::vector<std::string> words = split_words(line);
+    if (words.empty()) continue;
+    const std::string& keyword = words[0];
+    if (keyword == "end_header" && words.size() == 1) {
+      if (format == "ascii") return check_ascii_body(in, line_number, elements);
+      if (format == "binary_little_endian" || format == "binary_big_endian") {
+        if (crlf)  // "end_header\r\n": assimp's body would start elsewhere
+          return at_line(line_number) + "a binary PLY header must end in \"end_header\" and a line feed";
+        // assimp 5.2 skips a line feed that opens the body (found by measurement): its data
+        // would be read a byte late.
+        if (in.peek() == '\n')
+          return "a binary PLY body starting with a line-feed byte (0x0A): assimp 5.2 skips it and "
+                 "would read every value a byte late";
+        const std::streamoff at = in.tellg();
+        return check_binary_body(in, at < 0 ? file_bytes : std::uintmax_t(at), elements, file_bytes,
+                                 format == "binary_big_endian");
+      }
+      return at_line(line_number) + "no 'format ascii|binary_little_endian|binary_big_endian' line";
+    }
     if (keyword == "format") {
-      words >> format;
+      if (words.size() < 2) return at_line(line_number) + "a 'format' line without its format";
+      format = words[1];
+    } else if (keyword == "comment" || keyword == "obj_info") {
+      // assimp opens an element at a comment whose next word is an element name or a number.
+      static const char* kElementWords[] = {"vertex", "face", "tristrips", "edge", "material"};
+      if (keyword == "comment" && words.size() > 1 &&
+          (std::find(std::begin(kElementWords), std::end(kElementWords), words[1]) !=
+               std::end(kElementWords) ||
+           (words[1][0] >= '0' && words[1][0] <= '9')))
+        return at_line(line_number) + "a comment starting with " + quoted(words[1]) +
+               " (assimp would read it as an element)";
     } else if (keyword == "element") {
       PlyElement element;
-      if (words >> element.name >> element.count && element.count > file_bytes)
-        return "PLY element '" + element.name + "' claims " + std::to_string(element.count) +
+      if (words.size() != 3 || !all_digits(words[2].data(), words[2].data() + words[2].size()))
+        return at_line(line_number) + "an element line is 'element NAME COUNT'";
+      element.name = words[1];
+      if (words[2].size() > 18 || (element.count = std::stoull(words[2])) > file_bytes)
+        return "PLY element " + quoted(element.name) + " claims " + words[2].substr(0, 24) +
                " entries, more than the file's " + std::to_string(file_bytes) + " bytes";
+      if (!names.insert(element.name).second)
+        return at_line(line_number) + "element " + quoted(element.name) + " defined twice";
       elements.push_back(element);
     } else if (keyword == "property") {
-      std::string type;
-      words >> type;
+      if (elements.empty()) return at_line(line_number) + "a property before any element";
       PlyProperty property;
-      if (type == "list") {
-        std::string count_type, value_type;
-        words >> count_type >> value_type;
-        property.count_bytes = type_bytes(count_type, &property.count_signed);
-        property.value_bytes = type_bytes(value_type);
-        layout_known &= property.count_bytes > 0 && property.value_bytes > 0;
-      } else {
-        property.value_bytes = type_bytes(type);
-        layout_known &= property.value_bytes > 0;
+      const bool list = words.size() == 5 && words[1] == "list";
+      if (!list && words.size() != 3)
+        return at_line(line_number) + "a property line is 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'";
+      property.value = find_type(words[list ? 3 : 1]);
+      if (!property.value)
+        return at_line(line_number) + "unknown property type " + quoted(words[list ? 3 : 1]);
+      if (list) {
+        property.count = find_type(words[2]);
+        if (!property.count || property.count->kind == Kind::kReal)
+          return at_line(line_number) + "a list's count type must be an integer type, not " +
+                 quoted(words[2]);
       }
-      if (elements.empty())
-        layout_known = false;
-      else
-        elements.back().properties.push_back(property);
-    }
-    const size_t begin = line.find_first_not_of(" \t\r");
-    const size_t end = line.find_last_not_of(" \t\r");
-    if (begin != std::string::npos && line.compare(begin, end + 1 - begin, "end_header") == 0) {
-      if (!layout_known) return {};
-      if (format == "ascii") return check_ascii_body(in, elements, file_bytes);
-      if (format == "binary_little_endian" || format == "binary_big_endian")
-        return check_binary_body(in, elements, file_bytes, format == "binary_big_endian");
-      return {};
+      elements.back().properties.push_back(property);
+    } else {
+      return at_line(line_number) + quoted(keyword) + " is not a PLY header keyword";
     }
   }
   return "PLY header without an 'end_header' line";

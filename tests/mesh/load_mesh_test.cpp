@@ -5,11 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <array>
 #include <atomic>
 #include <chrono>
 #include <fstream>
 #include <thread>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -230,6 +232,115 @@ TEST(LoadMesh, EveryFormatLoadsTheSameOrientedBox) {
     const auto v = closed_mesh_volume(m);
     ASSERT_TRUE(v.has_value());
     EXPECT_NEAR(v->volume_m3, 0.02 * 0.03 * 0.05, 1e-6 * 0.02 * 0.03 * 0.05);  // float input
+  }
+}
+
+// PLY as writers produce it: comments, obj_info, CRLF line ends, tabs, exponents, int list
+// counts, both byte orders. The checks before assimp's reader must let all of them through.
+TEST(LoadMesh, PlyVariantsWritersProduceLoadTheBox) {
+  const std::string text = test::read_text(test::test_data("meshes/formats/box.ply"));
+  const std::string header_end = "end_header\n";
+  const size_t body_at = text.find(header_end) + header_end.size();
+  const std::string header = text.substr(0, body_at), body = text.substr(body_at);
+  auto replaced = [](std::string s, const std::string& from, const std::string& to) {
+    for (size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
+      s.replace(at, from.size(), to);
+    return s;
+  };
+  std::vector<std::pair<std::string, std::string>> files{
+      {"crlf.ply", replaced(text, "\n", "\r\n")},
+      {"comments.ply",
+       replaced(header, "comment", "comment TextureFile box.png\nobj_info scanner 1\ncomment") +
+           body},
+      {"tabs_exponents.ply", header + replaced(replaced(body, " ", "\t"), "0.055", "5.5e-2")},
+      {"int_counts.ply", replaced(header, "list uchar int", "list int uint") + body},
+  };
+  // Binary, both byte orders, counts as uint.
+  std::vector<float> points;
+  std::vector<std::vector<int>> faces;
+  {
+    std::istringstream in(body);
+    for (int v = 0; v < 8; ++v)
+      for (int k = 0; k < 3; ++k) points.push_back(0), in >> points.back();
+    // Moved by 1 m: 0.01 as a float starts with the byte 0x0A, which assimp skips (refused
+    // below).
+    for (float& p : points) p += 1.0f;
+    for (int f = 0; f < 6; ++f) {
+      int n = 0;
+      in >> n;
+      faces.emplace_back(n);
+      for (int& i : faces.back()) in >> i;
+    }
+  }
+  for (const bool big : {false, true}) {
+    std::string bytes = "ply\nformat binary_" + std::string(big ? "big" : "little") +
+                        "_endian 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
+                        "property float z\nelement face 6\nproperty list uint int "
+                        "vertex_indices\nend_header\n";
+    auto put = [&bytes, big](const void* value) {
+      char b[4];
+      std::memcpy(b, value, 4);
+      if (big) std::reverse(b, b + 4);
+      bytes.append(b, 4);
+    };
+    for (const float& p : points) put(&p);
+    for (const auto& f : faces) {
+      const uint32_t n = uint32_t(f.size());
+      put(&n);
+      for (const int& i : f) put(&i);
+    }
+    files.emplace_back(big ? "big_endian.ply" : "little_endian.ply", bytes);
+  }
+  const test::TempDir dir;
+  for (const auto& [name, content] : files) {
+    SCOPED_TRACE(name);
+    const Mesh m = load_mesh(dir.write(name, content));
+    EXPECT_EQ(m.triangles.size(), 12u);
+    EXPECT_EQ(m.vertices.size(), 8u);
+  }
+}
+
+// PLY that assimp 5.2 would read otherwise than its header says (and then size an array by a
+// count from the wrong bytes), or with a count it would allocate before reading: refused, one
+// line naming the problem.
+TEST(LoadMesh, PlyFilesAssimpWouldMisreadAreRefused) {
+  const std::string head =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\n";
+  const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n";
+  const std::vector<BadInput> cases{
+      {head + "property list uchar int vertex_indices\nend_header\n" + vertices + "3000000000 0 1 2\n",
+       "PLY line 13: element 'face' entry 0 lists '3000000000' values, more than the 3 on its line"},
+      {head + "property list int int vertex_indices\nend_header\n" + vertices + "-3 0 1 2\n",
+       "PLY line 13: '-3' is not a list count (element 'face' entry 0)"},
+      {head + "property list float int vertex_indices\nend_header\n" + vertices + "3 0 1 2\n",
+       "PLY line 8: a list's count type must be an integer type, not 'float'"},
+      {"ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nend_header\n"
+       "\n\x01\x02\x03",
+       "a binary PLY body starting with a line-feed byte (0x0A): assimp 5.2 skips it and would "
+       "read every value a byte late"},
+      {head + "property list uchar int vertex_indices\nend_header\n0 0 0\n\n1 0 0\n0 1 0\n3 0 1 2\n",
+       "PLY line 11: blank where element 'vertex' entry 1 should be"},
+      {head + "property list uchar int vertex_indices\nend_header\n0 0 0\r1 0 0\n0 1 0\n3 0 1 2\n",
+       "PLY line 10: a carriage return, form feed or NUL inside a line"},
+      {"ply\nformat ascii 1.0\ncomment 2 lines skipped\n" + head.substr(19) +
+           "property list uchar int vertex_indices\nend_header\n" + vertices + "3 0 1 2\n",
+       "PLY line 3: a comment starting with '2' (assimp would read it as an element)"},
+      {head + "property fl0at w\nproperty list uchar int vertex_indices\nend_header\n" + vertices +
+           "0 3 0 1 2\n",
+       "PLY line 8: unknown property type 'fl0at'"},
+      {head + "element face 1\nend_header\n", "PLY line 8: element 'face' defined twice"},
+      {head + "property list uchar int vertex_indices\n", "PLY header without an 'end_header' line"},
+      {head + "property list uchar int vertex_indices\nend_header\n0 0 x\n1 0 0\n0 1 0\n3 0 1 2\n",
+       "PLY line 10: 'x' is not a float (element 'vertex' entry 0)"},
+  };
+  const test::TempDir dir;
+  int k = 0;
+  for (const BadInput& c : cases) {
+    SCOPED_TRACE(c.file);
+    const std::string path = dir.write("bad" + std::to_string(k++) + ".ply", c.file);
+    const std::string msg = load_error(path);
+    EXPECT_EQ(msg, "load_mesh: '" + path + "': " + c.problem);
   }
 }
 
