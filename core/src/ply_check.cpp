@@ -251,13 +251,11 @@ std::string ply_problem(const std::string& path, std::uintmax_t file_bytes) {
     if (keyword == "end_header" && words.size() == 1) {
       if (format == "ascii") return check_ascii_body(in, line_number, elements);
       if (format == "binary_little_endian" || format == "binary_big_endian") {
-        if (crlf)  // "end_header\r\n": assimp's body would start elsewhere
-          return at_line(line_number) + "a binary PLY header must end in \"end_header\" and a line feed";
-        // assimp 5.2 skips a line feed that opens the body (found by measurement): its data
-        // would be read a byte late.
-        if (in.peek() == '\n')
-          return "a binary PLY body starting with a line-feed byte (0x0A): assimp 5.2 skips it and "
-                 "would read every value a byte late";
+        // assimp 5.2 drops a line feed that opens its copy of the body, there to skip the LF
+        // of "end_header\r\n": after "end_header\n" it drops a data byte.
+        if (!crlf && in.peek() == '\n')
+          return "a binary PLY body starting with a line-feed byte (0x0A) after \"end_header\\n\": "
+                 "assimp 5.2 drops it and would read every value a byte late";
         const std::streamoff at = in.tellg();
         return check_binary_body(in, at < 0 ? file_bytes : std::uintmax_t(at), elements, file_bytes,
                                  format == "binary_big_endian");
@@ -268,14 +266,18 @@ std::string ply_problem(const std::string& path, std::uintmax_t file_bytes) {
       if (words.size() < 2) return at_line(line_number) + "a 'format' line without its format";
       format = words[1];
     } else if (keyword == "comment" || keyword == "obj_info") {
-      // assimp opens an element at a comment whose next word is an element name or a number.
+      // assimp opens an element at a comment: "comment vertex 12 ..." has 12 entries, as has
+      // "comment 12 ..." (a nameless one); with no properties each takes a line of the body.
       static const char* kElementWords[] = {"vertex", "face", "tristrips", "edge", "material"};
-      if (keyword == "comment" && words.size() > 1 &&
-          (std::find(std::begin(kElementWords), std::end(kElementWords), words[1]) !=
-               std::end(kElementWords) ||
-           (words[1][0] >= '0' && words[1][0] <= '9')))
-        return at_line(line_number) + "a comment starting with " + quoted(words[1]) +
-               " (assimp would read it as an element)";
+      const bool named = words.size() > 2 && std::find(std::begin(kElementWords),
+                                                       std::end(kElementWords), words[1]) !=
+                                                 std::end(kElementWords);
+      const std::string* count = named ? &words[2] : words.size() > 1 ? &words[1] : nullptr;
+      const std::string digits =
+          count ? count->substr(0, count->find_first_not_of("0123456789")) : std::string();
+      if (keyword == "comment" && digits.find_first_not_of('0') != std::string::npos)
+        return at_line(line_number) + "a comment assimp would read as an element of " +
+               quoted(*count) + " entries";
     } else if (keyword == "element") {
       PlyElement element;
       if (words.size() != 3 || !all_digits(words[2].data(), words[2].data() + words[2].size()))

@@ -250,7 +250,9 @@ TEST(LoadMesh, PlyVariantsWritersProduceLoadTheBox) {
   std::vector<std::pair<std::string, std::string>> files{
       {"crlf.ply", replaced(text, "\n", "\r\n")},
       {"comments.ply",
-       replaced(header, "comment", "comment TextureFile box.png\nobj_info scanner 1\ncomment") +
+       replaced(header, "comment",
+                "comment TextureFile box.png\nobj_info scanner 1\ncomment vertex colors 0\n"
+                "comment 0 faces\ncomment") +
            body},
       {"tabs_exponents.ply", header + replaced(replaced(body, " ", "\t"), "0.055", "5.5e-2")},
       {"int_counts.ply", replaced(header, "list uchar int", "list int uint") + body},
@@ -290,6 +292,12 @@ TEST(LoadMesh, PlyVariantsWritersProduceLoadTheBox) {
       for (const int& i : f) put(&i);
     }
     files.emplace_back(big ? "big_endian.ply" : "little_endian.ply", bytes);
+    if (!big) {  // a CRLF header: assimp skips the LF, so a body may start with the byte 0x0A
+      const float x = 0.01f;  // its first byte is 0x0A
+      bytes.replace(bytes.find("end_header\n"), 11, "end_header\r\n");
+      std::memcpy(&bytes[bytes.find("end_header\r\n") + 12], &x, 4);
+      files.emplace_back("crlf_header_body_starts_with_lf.ply", bytes);
+    }
   }
   const test::TempDir dir;
   for (const auto& [name, content] : files) {
@@ -317,15 +325,18 @@ TEST(LoadMesh, PlyFilesAssimpWouldMisreadAreRefused) {
        "PLY line 8: a list's count type must be an integer type, not 'float'"},
       {"ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nend_header\n"
        "\n\x01\x02\x03",
-       "a binary PLY body starting with a line-feed byte (0x0A): assimp 5.2 skips it and would "
-       "read every value a byte late"},
+       "a binary PLY body starting with a line-feed byte (0x0A) after \"end_header\\n\": assimp "
+       "5.2 drops it and would read every value a byte late"},
       {head + "property list uchar int vertex_indices\nend_header\n0 0 0\n\n1 0 0\n0 1 0\n3 0 1 2\n",
        "PLY line 11: blank where element 'vertex' entry 1 should be"},
       {head + "property list uchar int vertex_indices\nend_header\n0 0 0\r1 0 0\n0 1 0\n3 0 1 2\n",
        "PLY line 10: a carriage return, form feed or NUL inside a line"},
       {"ply\nformat ascii 1.0\ncomment 2 lines skipped\n" + head.substr(19) +
            "property list uchar int vertex_indices\nend_header\n" + vertices + "3 0 1 2\n",
-       "PLY line 3: a comment starting with '2' (assimp would read it as an element)"},
+       "PLY line 3: a comment assimp would read as an element of '2' entries"},
+      {"ply\nformat ascii 1.0\ncomment face 1 more\n" + head.substr(19) +
+           "property list uchar int vertex_indices\nend_header\n" + vertices + "3 0 1 2\n",
+       "PLY line 3: a comment assimp would read as an element of '1' entries"},
       {head + "property fl0at w\nproperty list uchar int vertex_indices\nend_header\n" + vertices +
            "0 3 0 1 2\n",
        "PLY line 8: unknown property type 'fl0at'"},
