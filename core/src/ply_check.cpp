@@ -6,6 +6,10 @@
 #include <set>
 #include <vector>
 
+// The rules below follow the reader of assimp 5.2.5 (Debian 12's libassimp5; its source:
+// code/AssetLib/Ply/PlyParser.cpp, PlyLoader.cpp, include/assimp/IOStreamBuffer.h), read, not
+// copied: how it splits lines, reads the header and walks the body.
+
 namespace cordgrasp::detail {
 namespace {
 
@@ -18,12 +22,15 @@ struct PlyType {
 };
 
 constexpr PlyType kPlyTypes[] = {
-    {"char", 1, Kind::kSigned},    {"int8", 1, Kind::kSigned},     {"uchar", 1, Kind::kUnsigned},
-    {"uint8", 1, Kind::kUnsigned}, {"short", 2, Kind::kSigned},    {"int16", 2, Kind::kSigned},
+    {"char", 1, Kind::kSigned},     {"int8", 1, Kind::kSigned},     {"uchar", 1, Kind::kUnsigned},
+    {"uint8", 1, Kind::kUnsigned},  {"short", 2, Kind::kSigned},    {"int16", 2, Kind::kSigned},
     {"ushort", 2, Kind::kUnsigned}, {"uint16", 2, Kind::kUnsigned}, {"int", 4, Kind::kSigned},
-    {"int32", 4, Kind::kSigned},   {"uint", 4, Kind::kUnsigned},   {"uint32", 4, Kind::kUnsigned},
-    {"float", 4, Kind::kReal},     {"float32", 4, Kind::kReal},    {"double", 8, Kind::kReal},
+    {"int32", 4, Kind::kSigned},    {"uint", 4, Kind::kUnsigned},   {"uint32", 4, Kind::kUnsigned},
+    {"float", 4, Kind::kReal},      {"float32", 4, Kind::kReal},    {"double", 8, Kind::kReal},
     {"float64", 8, Kind::kReal}};
+
+// The element names whose entry counts assimp reads (it takes any other for 0 entries).
+constexpr const char* kElementNames[] = {"vertex", "face", "tristrips", "edge", "material"};
 
 const PlyType* find_type(const std::string& name) {
   for (const PlyType& t : kPlyTypes)
@@ -42,8 +49,86 @@ struct PlyElement {
   std::vector<PlyProperty> properties;
 };
 
-// What ends a line for assimp's PLY reader besides a line feed.
-const std::string kLineEnds("\r\f\0", 3);
+bool is_line_end(int c) { return c == '\r' || c == '\n' || c == '\0' || c == '\f'; }
+
+// The file through a buffer, split into lines as assimp's IOStreamBuffer::getNextLine splits
+// it: a line ends at CR, LF, NUL or FF (the one character is consumed), and a line that starts
+// at such a character is skipped through the next LF (so "\r\n" ends one line, one blank line
+// disappears, two give an empty line, and "\n\0text\n" hides "text").
+class AssimpLines {
+ public:
+  explicit AssimpLines(const std::string& path) : in_(path, std::ios::binary), buffer_(1 << 20) {}
+
+  /// The next line, false at the end of the file. `number` is its line in an editor (LFs + 1).
+  bool next(std::string& line, size_t* number) {
+    if (peek() < 0) return false;
+    if (is_line_end(peek()))
+      for (int c = get(); c != '\n'; c = get())
+        if (c < 0) return false;
+    if (number) *number = line_feeds_ + 1;
+    line.clear();
+    for (int c = peek(); c >= 0 && !is_line_end(c); c = peek()) {
+      // Copy the run up to the next line end at once.
+      const char* begin = buffer_.data() + pos_;
+      const char* end = buffer_.data() + size_;
+      const char* stop = begin;
+      while (stop != end && !is_line_end(static_cast<unsigned char>(*stop))) ++stop;
+      line.append(begin, stop);
+      pos_ += size_t(stop - begin);
+    }
+    terminator_ = get();
+    return true;
+  }
+
+  /// What ended the last line (-1: the end of the file).
+  int terminator() const { return terminator_; }
+  int peek() {
+    if (pos_ == size_ && !fill()) return -1;
+    return static_cast<unsigned char>(buffer_[pos_]);
+  }
+  int get() {
+    const int c = peek();
+    if (c >= 0) ++pos_;
+    if (c == '\n') ++line_feeds_;
+    return c;
+  }
+  /// Reads n bytes (n <= 8); false at the end of the file.
+  bool read(unsigned char* out, size_t n) {
+    for (size_t k = 0; k < n; ++k) {
+      const int c = get();
+      if (c < 0) return false;
+      out[k] = static_cast<unsigned char>(c);
+    }
+    return true;
+  }
+  /// Skips n bytes; false if the file ends first.
+  bool skip(std::uintmax_t n) {
+    while (n > 0) {
+      if (pos_ == size_ && !fill()) return false;
+      const std::uintmax_t step = std::min<std::uintmax_t>(n, size_ - pos_);
+      pos_ += size_t(step);
+      n -= step;
+    }
+    return true;
+  }
+  std::uintmax_t offset() const { return consumed_ - (size_ - pos_); }
+
+ private:
+  bool fill() {
+    in_.read(buffer_.data(), std::streamsize(buffer_.size()));
+    size_ = size_t(in_.gcount());
+    pos_ = 0;
+    consumed_ += size_;
+    return size_ > 0;
+  }
+
+  std::ifstream in_;
+  std::vector<char> buffer_;
+  size_t pos_ = 0, size_ = 0;
+  std::uintmax_t consumed_ = 0;  // bytes read into the buffer so far
+  size_t line_feeds_ = 0;
+  int terminator_ = -1;
+};
 
 std::vector<std::string> split_words(const std::string& line) {
   std::vector<std::string> words;
@@ -99,20 +184,19 @@ std::string entry_of(const PlyElement& element, unsigned long long entry) {
   return "element " + quoted(element.name) + " entry " + std::to_string(entry);
 }
 
-// ASCII body: one entry per line, its values separated by spaces or tabs, each a whole number
-// of its type; a list's count no more than the values left on its line.
-std::string check_ascii_body(std::istream& in, size_t line_number,
-                             const std::vector<PlyElement>& elements) {
+// ASCII body: one entry per line (as assimp splits lines), its values separated by spaces or
+// tabs, each a whole value of its type (assimp reads a value up to the first character it
+// cannot use and the next one from there), no fewer values than properties (past the line's
+// end assimp reads the bytes of earlier lines) and a list's count no more than the values left
+// on its line.
+std::string check_ascii_body(AssimpLines& lines, const std::vector<PlyElement>& elements) {
   std::string line;
+  size_t number = 0;
   for (const PlyElement& element : elements)
     for (unsigned long long i = 0; i < element.count; ++i) {
-      ++line_number;
-      if (!std::getline(in, line)) return {};  // a short file: assimp's to judge
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      // assimp reads the body line by line, a CR, NUL or form feed also ending a line, and skips
-      // some blank lines but not others: such lines would shift its entries against these.
-      if (line.find_first_of(kLineEnds) != std::string::npos)
-        return at_line(line_number) + "a carriage return, form feed or NUL inside a line";
+      if (!lines.next(line, &number))
+        return "PLY file ends before " + entry_of(element, i) + " (of " +
+               std::to_string(element.count) + ")";
       const char* c = line.c_str();
       const char* end = c + line.size();
       auto next = [&c, end](const char** b, const char** e) {
@@ -124,35 +208,35 @@ std::string check_ascii_body(std::istream& in, size_t line_number,
       };
       size_t values_left = 0;
       for (const char *b, *e; next(&b, &e);) ++values_left;
-      if (values_left == 0)
-        return at_line(line_number) + "blank where " + entry_of(element, i) + " should be";
+      if (values_left == 0 && !element.properties.empty())
+        return at_line(number) + "blank where " + entry_of(element, i) + " should be";
       c = line.c_str();
       for (const PlyProperty& p : element.properties) {
         const char* b = nullptr;
         const char* e = nullptr;
         if (!next(&b, &e))
-          return at_line(line_number) + entry_of(element, i) + " has fewer values than its properties";
+          return at_line(number) + entry_of(element, i) + " has fewer values than properties";
         --values_left;
         if (!p.count) {
           if (!is_value(b, e, p.value->kind))
-            return at_line(line_number) + quoted(b, e) + " is not a " + p.value->name + " (" +
-                 entry_of(element, i) + ")";
+            return at_line(number) + quoted(b, e) + " is not a " + p.value->name + " (" +
+                   entry_of(element, i) + ")";
           continue;
         }
         if (!is_value(b, e, Kind::kUnsigned))
-          return at_line(line_number) + quoted(b, e) + " is not a list count (" +
+          return at_line(number) + quoted(b, e) + " is not a list count (" +
                  entry_of(element, i) + ")";
         unsigned long long n = 0;
         for (const char* d = b; d != e && n <= values_left; ++d) n = 10 * n + unsigned(*d - '0');
         if (n > values_left)
-          return at_line(line_number) + entry_of(element, i) + " lists " + quoted(b, e) +
+          return at_line(number) + entry_of(element, i) + " lists " + quoted(b, e) +
                  " values, more than the " + std::to_string(values_left) + " on its line";
         for (unsigned long long k = 0; k < n; ++k) {
           next(&b, &e);
           --values_left;
           if (!is_value(b, e, p.value->kind))
-            return at_line(line_number) + quoted(b, e) + " is not a " + p.value->name + " (" +
-                 entry_of(element, i) + ")";
+            return at_line(number) + quoted(b, e) + " is not a " + p.value->name + " (" +
+                   entry_of(element, i) + ")";
         }
       }
     }
@@ -171,9 +255,8 @@ long long read_count(const unsigned char* raw, bool swap) {
 // Binary body: each list's count, read in its type and the file's byte order, is >= 0 and its
 // values fit in the bytes left. Elements after the last list that could ask for much (a count
 // wider than a byte, or signed) need no walk.
-std::string check_binary_body(std::istream& in, std::uintmax_t at,
-                              const std::vector<PlyElement>& elements, std::uintmax_t file_bytes,
-                              bool big_endian) {
+std::string check_binary_body(AssimpLines& bytes, const std::vector<PlyElement>& elements,
+                              std::uintmax_t file_bytes, bool big_endian) {
   size_t walk_to = 0;
   for (size_t e = 0; e < elements.size(); ++e)
     for (const PlyProperty& p : elements[e].properties)
@@ -182,6 +265,10 @@ std::string check_binary_body(std::istream& in, std::uintmax_t at,
   unsigned char first_byte;
   std::memcpy(&first_byte, &probe, 1);
   const bool swap = big_endian == (first_byte == 1);
+  auto ends_before = [](const PlyElement& element, unsigned long long i) {
+    return "PLY file ends before " + entry_of(element, i) + " (of " +
+           std::to_string(element.count) + ")";
+  };
   for (size_t e = 0; e < walk_to; ++e) {
     const PlyElement& element = elements[e];
     bool has_list = false;
@@ -191,31 +278,30 @@ std::string check_binary_body(std::istream& in, std::uintmax_t at,
       stride += p.value->bytes;
     }
     if (!has_list) {  // entries of one size: skip them at once
-      if (stride != 0 && element.count > (file_bytes - at) / stride) return {};
-      at += element.count * stride;
-      in.ignore(std::streamsize(element.count * stride));
+      if (!bytes.skip(element.count * stride)) return ends_before(element, 0);
       continue;
     }
     for (unsigned long long i = 0; i < element.count; ++i)
       for (const PlyProperty& p : element.properties) {
         if (!p.count) {
-          if (!in.ignore(p.value->bytes)) return {};
-          at += p.value->bytes;
+          if (!bytes.skip(p.value->bytes)) return ends_before(element, i);
           continue;
         }
         unsigned char raw[4];
-        if (!in.read(reinterpret_cast<char*>(raw), p.count->bytes)) return {};
-        at += p.count->bytes;
+        if (!bytes.read(raw, size_t(p.count->bytes))) return ends_before(element, i);
         const bool s = p.count->kind == Kind::kSigned;
-        const long long n = p.count->bytes == 1 ? (s ? read_count<int8_t>(raw, swap) : read_count<uint8_t>(raw, swap))
-                            : p.count->bytes == 2 ? (s ? read_count<int16_t>(raw, swap) : read_count<uint16_t>(raw, swap))
-                                                  : (s ? read_count<int32_t>(raw, swap) : read_count<uint32_t>(raw, swap));
-        const std::uintmax_t left = file_bytes - std::min(file_bytes, at);
+        long long n = 0;
+        if (p.count->bytes == 1)
+          n = s ? read_count<int8_t>(raw, swap) : read_count<uint8_t>(raw, swap);
+        else if (p.count->bytes == 2)
+          n = s ? read_count<int16_t>(raw, swap) : read_count<uint16_t>(raw, swap);
+        else
+          n = s ? read_count<int32_t>(raw, swap) : read_count<uint32_t>(raw, swap);
+        const std::uintmax_t left = file_bytes - std::min(file_bytes, bytes.offset());
         if (n < 0 || std::uintmax_t(n) * std::uintmax_t(p.value->bytes) > left)
           return "PLY " + entry_of(element, i) + " lists " + std::to_string(n) +
                  " values, more than the " + std::to_string(left) + " bytes left in the file";
-        if (!in.ignore(std::streamsize(n * p.value->bytes))) return {};
-        at += std::uintmax_t(n) * p.value->bytes;
+        if (!bytes.skip(std::uintmax_t(n) * p.value->bytes)) return ends_before(element, i);
       }
   }
   return {};
@@ -224,89 +310,105 @@ std::string check_binary_body(std::istream& in, std::uintmax_t at,
 }  // namespace
 
 std::string ply_problem(const std::string& path, std::uintmax_t file_bytes) {
-  std::ifstream in(path, std::ios::binary);
+  AssimpLines lines(path);
   std::string line;
-  // The magic may follow blank lines and spaces: assimp's reader skips them too.
-  size_t magic = std::string::npos, line_number = 0;
-  while (magic == std::string::npos && std::getline(in, line)) {
-    ++line_number;
-    magic = line.find_first_not_of(" \t\r\v\f");
-  }
-  if (magic == std::string::npos || line.compare(magic, 3, "ply") != 0) return {};
-  // assimp reads the header by its own rules (a comment can open an element, an unknown type
-  // ends an element's properties, a CR or NUL ends a line): a header it could read otherwise
-  // than this one is refused, so that the body below is walked as assimp walks it.
-  std::string format;
+  size_t number = 0;
+  // assimp takes the file for PLY when its first line starts with "ply" in any case.
+  if (!lines.next(line, &number) || line.size() < 3 ||
+      std::tolower(static_cast<unsigned char>(line[0])) != 'p' ||
+      std::tolower(static_cast<unsigned char>(line[1])) != 'l' ||
+      std::tolower(static_cast<unsigned char>(line[2])) != 'y')
+    return {};
+  // The format on the second line.
+  if (!lines.next(line, &number)) return "PLY header without an 'end_header' line";
+  const std::vector<std::string> format_words = split_words(line);
+  const std::string format = format_words.size() >= 2 && format_words[0] == "format"
+                                 ? format_words[1]
+                                 : std::string();
+  if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
+    return at_line(number) +
+           "the line after 'ply' must be 'format ascii|binary_little_endian|binary_big_endian'";
+  // The header, within what assimp reads the same way: comments and obj_info lines before the
+  // first element; then element lines, each followed by its property lines, where a comment,
+  // obj_info or blank line ends the element's properties (assimp 5.2 ignores later ones) and
+  // only an element line or end_header may follow it.
   std::vector<PlyElement> elements;
   std::set<std::string> names;
-  while (std::getline(in, line)) {
-    ++line_number;
-    const bool crlf = !line.empty() && line.back() == '\r';
-    if (crlf) line.pop_back();
-    if (line.find_first_of(kLineEnds) != std::string::npos)
-      return at_line(line_number) + "a carriage return, form feed or NUL inside the header";
+  bool in_properties = false;  // the last line was an element or a property line
+  while (lines.next(line, &number)) {
     const std::vector<std::string> words = split_words(line);
-    if (words.empty()) continue;
-    const std::string& keyword = words[0];
-    if (keyword == "end_header" && words.size() == 1) {
-      if (format == "ascii") return check_ascii_body(in, line_number, elements);
-      if (format == "binary_little_endian" || format == "binary_big_endian") {
-        // assimp 5.2 drops a line feed that opens its copy of the body, there to skip the LF
-        // of "end_header\r\n": after "end_header\n" it drops a data byte.
-        if (!crlf && in.peek() == '\n')
-          return "a binary PLY body starting with a line-feed byte (0x0A) after \"end_header\\n\": "
-                 "assimp 5.2 drops it and would read every value a byte late";
-        const std::streamoff at = in.tellg();
-        return check_binary_body(in, at < 0 ? file_bytes : std::uintmax_t(at), elements, file_bytes,
-                                 format == "binary_big_endian");
+    const std::string keyword = words.empty() ? std::string() : words[0];
+    if (keyword == "end_header") {
+      if (words.size() != 1) return at_line(number) + "text after 'end_header'";
+      if (format == "ascii") return check_ascii_body(lines, elements);
+      // assimp drops an LF that opens the body, there to skip the LF of "end_header\r\n":
+      // after "end_header\n" it drops a data byte.
+      if (lines.peek() == '\n') {
+        if (lines.terminator() == '\n')
+          return "a binary PLY body starting with a line-feed byte (0x0A) after "
+                 "\"end_header\\n\": assimp 5.2 drops it and would read every value a byte late";
+        lines.get();
       }
-      return at_line(line_number) + "no 'format ascii|binary_little_endian|binary_big_endian' line";
+      return check_binary_body(lines, elements, file_bytes, format == "binary_big_endian");
     }
-    if (keyword == "format") {
-      if (words.size() < 2) return at_line(line_number) + "a 'format' line without its format";
-      format = words[1];
-    } else if (keyword == "comment" || keyword == "obj_info") {
-      // assimp opens an element at a comment: "comment vertex 12 ..." has 12 entries, as has
-      // "comment 12 ..." (a nameless one); with no properties each takes a line of the body.
-      static const char* kElementWords[] = {"vertex", "face", "tristrips", "edge", "material"};
-      const bool named = words.size() > 2 && std::find(std::begin(kElementWords),
-                                                       std::end(kElementWords), words[1]) !=
-                                                 std::end(kElementWords);
+    if (keyword.empty() || keyword == "comment" || keyword == "obj_info") {
+      in_properties = false;
+      // Newer assimp opens an element at any comment: "comment vertex 12" and "comment 12"
+      // would have 12 entries.
+      const bool named = words.size() > 2 && std::find(std::begin(kElementNames),
+                                                       std::end(kElementNames), words[1]) !=
+                                                 std::end(kElementNames);
       const std::string* count = named ? &words[2] : words.size() > 1 ? &words[1] : nullptr;
       const std::string digits =
           count ? count->substr(0, count->find_first_not_of("0123456789")) : std::string();
       if (keyword == "comment" && digits.find_first_not_of('0') != std::string::npos)
-        return at_line(line_number) + "a comment assimp would read as an element of " +
+        return at_line(number) + "a comment assimp would read as an element of " +
                quoted(*count) + " entries";
     } else if (keyword == "element") {
       PlyElement element;
       if (words.size() != 3 || !all_digits(words[2].data(), words[2].data() + words[2].size()))
-        return at_line(line_number) + "an element line is 'element NAME COUNT'";
+        return at_line(number) + "an element line is 'element NAME COUNT'";
       element.name = words[1];
       if (words[2].size() > 18 || (element.count = std::stoull(words[2])) > file_bytes)
         return "PLY element " + quoted(element.name) + " claims " + words[2].substr(0, 24) +
                " entries, more than the file's " + std::to_string(file_bytes) + " bytes";
+      if (element.count > 0 && std::find(std::begin(kElementNames), std::end(kElementNames),
+                                         element.name) == std::end(kElementNames))
+        return at_line(number) + "element " + quoted(element.name) +
+               ": assimp 5.2 reads the entries of vertex, face, tristrips, edge and material "
+               "elements only (it would take these for none and misread the rest)";
       if (!names.insert(element.name).second)
-        return at_line(line_number) + "element " + quoted(element.name) + " defined twice";
+        return at_line(number) + "element " + quoted(element.name) + " defined twice";
       elements.push_back(element);
+      in_properties = true;
     } else if (keyword == "property") {
-      if (elements.empty()) return at_line(line_number) + "a property before any element";
+      if (elements.empty()) return at_line(number) + "a property before any element";
+      if (!in_properties)
+        return at_line(number) +
+               "a property after a comment or a blank line (assimp 5.2 ends the element's "
+               "properties there)";
       PlyProperty property;
       const bool list = words.size() == 5 && words[1] == "list";
+      // assimp reads the count type right after "list" and one space or tab.
+      const size_t after_list = line.find("list") + 4;
+      if (list && (line.size() <= after_list + 1 || line[after_list + 1] == ' ' ||
+                   line[after_list + 1] == '\t'))
+        return at_line(number) + "more than one space after 'list'";
       if (!list && words.size() != 3)
-        return at_line(line_number) + "a property line is 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'";
+        return at_line(number) +
+               "a property line is 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'";
       property.value = find_type(words[list ? 3 : 1]);
       if (!property.value)
-        return at_line(line_number) + "unknown property type " + quoted(words[list ? 3 : 1]);
+        return at_line(number) + "unknown property type " + quoted(words[list ? 3 : 1]);
       if (list) {
         property.count = find_type(words[2]);
         if (!property.count || property.count->kind == Kind::kReal)
-          return at_line(line_number) + "a list's count type must be an integer type, not " +
+          return at_line(number) + "a list's count type must be an integer type, not " +
                  quoted(words[2]);
       }
       elements.back().properties.push_back(property);
     } else {
-      return at_line(line_number) + quoted(keyword) + " is not a PLY header keyword";
+      return at_line(number) + quoted(keyword) + " is not a PLY header keyword";
     }
   }
   return "PLY header without an 'end_header' line";

@@ -256,6 +256,8 @@ TEST(LoadMesh, PlyVariantsWritersProduceLoadTheBox) {
            body},
       {"tabs_exponents.ply", header + replaced(replaced(body, " ", "\t"), "0.055", "5.5e-2")},
       {"int_counts.ply", replaced(header, "list uchar int", "list int uint") + body},
+      // assimp ends a line at a CR too, and skips one blank line.
+      {"cr_and_blank_line.ply", header + replaced(replaced(body, "\n4 0 2", "\n\n4 0 2"), "0.01 0.02 0.055\n", "0.01 0.02 0.055\r")},
   };
   // Binary, both byte orders, counts as uint.
   std::vector<float> points;
@@ -327,10 +329,21 @@ TEST(LoadMesh, PlyFilesAssimpWouldMisreadAreRefused) {
        "\n\x01\x02\x03",
        "a binary PLY body starting with a line-feed byte (0x0A) after \"end_header\\n\": assimp "
        "5.2 drops it and would read every value a byte late"},
-      {head + "property list uchar int vertex_indices\nend_header\n0 0 0\n\n1 0 0\n0 1 0\n3 0 1 2\n",
-       "PLY line 11: blank where element 'vertex' entry 1 should be"},
-      {head + "property list uchar int vertex_indices\nend_header\n0 0 0\r1 0 0\n0 1 0\n3 0 1 2\n",
-       "PLY line 10: a carriage return, form feed or NUL inside a line"},
+      {head + "property list uchar int vertex_indices\nend_header\n0 0 0\n\n\n1 0 0\n0 1 0\n3 0 1 2\n",
+       "PLY line 12: blank where element 'vertex' entry 1 should be"},
+      {head + "property list uchar int vertex_indices\nend_header\n0 0 0\n" + std::string(1, '\0') +
+           " 9 9\n1 0 0\n0 1 0\n",
+       "PLY file ends before element 'face' entry 0 (of 1)"},
+      {head + "property list  uchar int vertex_indices\nend_header\n" + vertices + "3 0 1 2\n",
+       "PLY line 8: more than one space after 'list'"},
+      {head + "property list uchar int vertex_indices\ncomment made by hand\nproperty float w\n"
+              "end_header\n" + vertices + "3 0 1 2 0\n",
+       "PLY line 10: a property after a comment or a blank line (assimp 5.2 ends the element's "
+       "properties there)"},
+      {"ply\nformat ascii 1.0\nelement camera 1\nproperty float x\n" + head.substr(19) +
+           "end_header\n0\n" + vertices,
+       "PLY line 3: element 'camera': assimp 5.2 reads the entries of vertex, face, tristrips, "
+       "edge and material elements only (it would take these for none and misread the rest)"},
       {"ply\nformat ascii 1.0\ncomment 2 lines skipped\n" + head.substr(19) +
            "property list uchar int vertex_indices\nend_header\n" + vertices + "3 0 1 2\n",
        "PLY line 3: a comment assimp would read as an element of '2' entries"},
