@@ -1,6 +1,7 @@
 #include "ply_check.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <fstream>
 #include <set>
