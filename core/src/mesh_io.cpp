@@ -25,6 +25,7 @@
 #include "cordgrasp/core/enum_names.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/mesh_properties.h"
+#include "off_check.h"
 #include "ply_check.h"
 #include "weld_table.h"
 
@@ -159,74 +160,6 @@ std::string point_text(const Eigen::Vector3d& p) {
   return out.str();
 }
 
-// assimp 5.2's OFF reader crashes on a face line with no vertices ("0") and on one that does
-// not hold its vertex count's indices ("3ply"): a file that starts like OFF must give each face
-// line a vertex count >= 1 and that many whole-number indices below its vertex count (colours
-// may follow).
-void check_off_faces(const std::string& path, uintmax_t file_bytes) {
-  std::ifstream in(path, std::ios::binary);
-  std::vector<std::string> lines;  // non-empty lines without comments
-  for (std::string line; std::getline(in, line);) {
-    line = line.substr(0, line.find('#'));
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    if (lines.empty() && line.find("OFF") == std::string::npos) return;  // not OFF: read no more
-    lines.push_back(line);
-  }
-  if (lines.empty()) return;
-  // The vertex and face counts follow the keyword, on its line ("OFF 4 4 6") or on the next
-  // ones, even one per line; the vertex lines start after the line holding the face count.
-  std::vector<std::string> count_tokens;
-  size_t first_vertex_line = 1;
-  for (size_t i = 0; i < lines.size() && count_tokens.size() < 2; ++i) {
-    std::istringstream words(i == 0 ? lines[0].substr(lines[0].find("OFF") + 3) : lines[i]);
-    for (std::string token; count_tokens.size() < 2 && words >> token;) count_tokens.push_back(token);
-    first_vertex_line = i + 1;
-  }
-  if (count_tokens.size() < 2) return;  // assimp's to judge
-  // A count too large for any file of this size (a vertex or a face takes a byte at least; one
-  // of 10^55 once made assimp allocate 45 GB) is refused before assimp sizes its arrays by it.
-  // assimp reads a count's leading digits ("12(3" counts 12), so every run of digits in the
-  // count tokens is bounded.
-  auto count = [&](const std::string& token) -> long long {
-    for (size_t b = token.find_first_of("0123456789"); b != std::string::npos;) {
-      const size_t e = std::min(token.size(), token.find_first_not_of("0123456789", b));
-      const std::string run = token.substr(b, e - b);
-      if (run.size() > 18 || std::stoull(run) > file_bytes)
-        fail(path, "OFF header counts " + run.substr(0, 24) + (run.size() > 24 ? "..." : "") +
-                       " elements, more than the file's " + std::to_string(file_bytes) +
-                       " bytes could hold");
-      b = token.find_first_of("0123456789", e);
-    }
-    if (token.find_first_not_of("0123456789") != std::string::npos) return -1;
-    return std::stoll(token);
-  };
-  const std::string& vertex_token = count_tokens[0];
-  const std::string& face_token = count_tokens[1];
-  const long long vertices = count(vertex_token), faces = count(face_token);
-  if (vertices < 0 || faces < 0) return;  // not whole numbers: assimp's to judge
-  for (long long f = 0; f < faces && size_t(first_vertex_line + vertices + f) < lines.size(); ++f) {
-    std::istringstream face(lines[size_t(first_vertex_line + vertices + f)]);
-    long long n = 0;
-    if (!(face >> n)) fail(path, "a face line without a vertex count");
-    if (n < 1) fail(path, "a face without vertices");
-    for (long long k = 0; k < n; ++k) {
-      std::string token;
-      size_t used = 0;
-      long long index = -1;
-      if (face >> token) {
-        try {
-          index = std::stoll(token, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-      }
-      if (used == 0 || used != token.size())
-        fail(path, "a face line without its " + std::to_string(n) + " vertex indices");
-      if (index < 0 || index >= vertices) fail(path, "a face index past the vertices");
-    }
-  }
-}
-
 }  // namespace
 
 Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoadReport* report) {
@@ -241,13 +174,18 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   }
   const uintmax_t file_bytes = fs::file_size(path, ec);
   if (file_bytes == 0 && !ec) fail(path, "empty file (0 bytes)");
-  if (const std::string problem = detail::ply_problem(path, file_bytes); !problem.empty())
-    fail(path, problem);
-  check_off_faces(path, file_bytes);
   Assimp::Importer importer;
   std::string ext = fs::path(path).extension().string();
   if (ext.empty() || !importer.IsExtensionSupported(ext))
     fail(path, "unknown mesh format '" + ext + "' (use OBJ, STL, PLY, OFF, DAE or glTF)");
+  std::string lower_ext = ext;
+  for (char& c : lower_ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  // assimp picks its reader by the extension alone (one reader per extension here): the PLY
+  // and OFF readers read what the extension names, whatever the file holds.
+  const std::string problem = lower_ext == ".ply"   ? detail::ply_problem(path, file_bytes)
+                              : lower_ext == ".off" ? detail::off_problem(path, file_bytes)
+                                                    : std::string();
+  if (!problem.empty()) fail(path, problem);
   // Collada: keep node transforms and <unit>, drop the up-axis rotation (ROS/RViz semantics).
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   auto* io = new MeshFolderIOSystem(path);
@@ -258,8 +196,6 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   // process) on the first and the last. Each mesh's primitive types are set from its faces.
   // PLY and OFF hold every face's indices in the file itself, a byte or more each: a reader
   // that fills a longer face (ASCII PLY "33030 2 1") would have triangulation take seconds.
-  std::string lower_ext = ext;
-  for (char& c : lower_ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   const bool indices_in_file = lower_ext == ".ply" || lower_ext == ".off";
   const aiScene* scene = importer.ReadFile(path, 0);
   if (scene && scene->mRootNode) {

@@ -368,6 +368,36 @@ TEST(LoadMesh, PlyFilesAssimpWouldMisreadAreRefused) {
   }
 }
 
+// OFF as writers produce it (assimp 5.2 reads any file named .off with its OFF reader).
+TEST(LoadMesh, OffVariantsLoadTheTetrahedron) {
+  const std::string points = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  const std::string faces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  const std::vector<std::pair<std::string, std::string>> files{
+      {"plain.off", "OFF\n4 4 6\n" + points + faces},
+      {"comments_crlf.off", "OFF\r\n# a comment\r\n4 4 6 # counts\r\n\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n"
+                            "0 0 1\r\n3 0 2 1\r\n3 0 1 3\r\n3 0 3 2\r\n3 1 2 3\r\n"},
+      {"dimension.off", "nOFF 3\n4 4 6\n" + points + faces},
+      {"face_colors.off", "OFF\n4 4 6\n" + points +
+                              "3 0 2 1 255 0 0\n3 0 1 3 0 255 0\n3 0 3 2 0 0 255\n3 1 2 3 9 9 9\n"},
+  };
+  const test::TempDir dir;
+  for (const auto& [name, content] : files) {
+    SCOPED_TRACE(name);
+    const Mesh m = load_mesh(dir.write(name, content));
+    EXPECT_EQ(m.triangles.size(), 4u);
+    EXPECT_EQ(m.vertices.size(), 4u);
+  }
+  // Without the keyword; a count starting with 4 would be read as the homogeneous prefix.
+  EXPECT_EQ(load_mesh(dir.write("no_keyword.off", "3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"))
+                .triangles.size(),
+            1u);
+  const std::string path = dir.write("no_keyword_4.off", "4 4 6\n" + points + faces);
+  EXPECT_EQ(load_error(path), "load_mesh: '" + path +
+                                  "': an OFF file without the 'OFF' keyword whose first count "
+                                  "starts with 4 (assimp 5.2 reads it as a prefix; add an 'OFF' "
+                                  "line)");
+}
+
 TEST(LoadMesh, ColladaUpAxisIsIgnoredButNodeTransformsAreApplied) {
   // box_zup.dae stores the box in a child node's frame: rotated 90° about z under a translated
   // parent. Applying assimp's Z_UP → Y_UP root rotation would swap y and z.
