@@ -25,6 +25,7 @@
 #include "cordgrasp/core/enum_names.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/mesh_properties.h"
+#include "obj_check.h"
 #include "off_check.h"
 #include "ply_check.h"
 #include "weld_table.h"
@@ -180,10 +181,11 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
     fail(path, "unknown mesh format '" + ext + "' (use OBJ, STL, PLY, OFF, DAE or glTF)");
   std::string lower_ext = ext;
   for (char& c : lower_ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  // assimp picks its reader by the extension alone (one reader per extension here): the PLY
-  // and OFF readers read what the extension names, whatever the file holds.
+  // assimp picks its reader by the extension alone (one reader per extension here): the PLY,
+  // OFF and OBJ readers read what the extension names, whatever the file holds.
   const std::string problem = lower_ext == ".ply"   ? detail::ply_problem(path, file_bytes)
                               : lower_ext == ".off" ? detail::off_problem(path, file_bytes)
+                              : lower_ext == ".obj" ? detail::obj_problem(path)
                                                     : std::string();
   if (!problem.empty()) fail(path, problem);
   // Collada: keep node transforms and <unit>, drop the up-axis rotation (ROS/RViz semantics).
