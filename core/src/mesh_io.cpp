@@ -25,6 +25,7 @@
 #include "cordgrasp/core/enum_names.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/mesh_properties.h"
+#include "mesh_text.h"
 #include "obj_check.h"
 #include "off_check.h"
 #include "ply_check.h"
@@ -106,11 +107,17 @@ struct SoupBuilder {
 /// within the precision of assimp's float coordinates (2^-23 ≈ 1.2e-7).
 constexpr double kDegenerateAltitudeRel = 1e-7;
 
+struct RefusedFile {
+  std::string file;
+  std::string why;
+};
+
 /// Assimp's file system confined to the mesh's own folder: a reference to a file elsewhere
 /// (an OBJ's `mtllib ../../etc/passwd`, a glTF buffer `../x.bin`) is not opened. Only geometry
 /// is read, so a refused material file costs nothing (assimp falls back to no materials); a
 /// refused glTF buffer fails the load with assimp's message. A symlink is followed to where
-/// it points, and refused if that is elsewhere. Each refused file is named once on stderr.
+/// it points, and refused if that is elsewhere; so is a side file starting with a UTF-32 mark
+/// (mesh_text.h). Each refused file is named once on stderr.
 class MeshFolderIOSystem : public Assimp::DefaultIOSystem {
  public:
   explicit MeshFolderIOSystem(const std::string& mesh_path)
@@ -120,10 +127,16 @@ class MeshFolderIOSystem : public Assimp::DefaultIOSystem {
     return allowed(file) && Assimp::DefaultIOSystem::Exists(file);
   }
   Assimp::IOStream* Open(const char* file, const char* mode) override {
-    return allowed(file) ? Assimp::DefaultIOSystem::Open(file, mode) : nullptr;
+    if (!allowed(file)) return nullptr;
+    // A side file (an OBJ's material library) is read as text too (see load_mesh).
+    if (resolved(file) != self_ && !detail::file_utf32_mark_problem(file).empty()) {
+      refuse(file, "it starts with a UTF-32 byte-order mark, which assimp 5.2 reads past");
+      return nullptr;
+    }
+    return Assimp::DefaultIOSystem::Open(file, mode);
   }
   /// Files asked for and refused, in first-asked order.
-  const std::vector<std::string>& refused() const { return refused_; }
+  const std::vector<RefusedFile>& refused() const { return refused_; }
 
  private:
   static fs::path resolved(const fs::path& p) {
@@ -136,23 +149,27 @@ class MeshFolderIOSystem : public Assimp::DefaultIOSystem {
     const fs::path rel = folder_.empty() ? fs::path() : p.lexically_relative(folder_);
     if (!p.empty() && (p == self_ || (!rel.empty() && *rel.begin() != "..")))
       return true;
-    if (std::find(refused_.begin(), refused_.end(), file) == refused_.end())
-      refused_.emplace_back(file);
+    refuse(file, "outside the mesh's folder");
     return false;
   }
+  void refuse(const char* file, const char* why) const {
+    for (const RefusedFile& r : refused_)
+      if (r.file == file) return;
+    refused_.push_back({file, why});
+  }
   fs::path self_, folder_;
-  mutable std::vector<std::string> refused_;
+  mutable std::vector<RefusedFile> refused_;
 };
 
 /// "cordgrasp: warning: ..." naming the first refused file (assimp asks for variants of one
 /// name), once per mesh file for the whole process.
-void warn_refused_files(const std::string& path, const std::vector<std::string>& refused) {
+void warn_refused_files(const std::string& path, const std::vector<RefusedFile>& refused) {
   static std::mutex mutex;
   static std::set<std::string> warned;
   const std::lock_guard<std::mutex> lock(mutex);
   if (refused.empty() || !warned.insert(path).second) return;
-  std::cerr << "cordgrasp: warning: load_mesh: '" << path << "': not opening '" << refused[0]
-            << "': outside the mesh's folder (only geometry is read)\n";
+  std::cerr << "cordgrasp: warning: load_mesh: '" << path << "': not opening '" << refused[0].file
+            << "': " << refused[0].why << " (only geometry is read)\n";
 }
 
 std::string point_text(const Eigen::Vector3d& p) {
@@ -183,6 +200,8 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   for (char& c : lower_ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   // assimp picks its reader by the extension alone (one reader per extension here): the PLY,
   // OFF and OBJ readers read what the extension names, whatever the file holds.
+  if (const std::string mark = detail::file_utf32_mark_problem(path); !mark.empty())
+    fail(path, mark);
   const std::string problem = lower_ext == ".ply"   ? detail::ply_problem(path, file_bytes)
                               : lower_ext == ".off" ? detail::off_problem(path, file_bytes)
                               : lower_ext == ".obj" ? detail::obj_problem(path)

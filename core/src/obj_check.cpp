@@ -3,6 +3,8 @@
 #include <fstream>
 #include <vector>
 
+#include "mesh_text.h"
+
 namespace cordgrasp::detail {
 
 std::string obj_problem(const std::string& path) {
@@ -13,7 +15,6 @@ std::string obj_problem(const std::string& path) {
   int slashes = 0;
   bool continuation = false;  // a '\' seen: with a line end next, the line goes on after the LF
   bool skip_to_line_feed = false;
-  auto is_line_end = [](char c) { return c == '\r' || c == '\n' || c == '\0' || c == '\f'; };
   while (in) {
     in.read(buffer.data(), std::streamsize(buffer.size()));
     const size_t n = size_t(in.gcount());
@@ -24,7 +25,7 @@ std::string obj_problem(const std::string& path) {
         skip_to_line_feed = c != '\n';
         continue;
       }
-      if (continuation && is_line_end(c)) {
+      if (continuation && is_assimp_line_end(c)) {
         continuation = false;
         skip_to_line_feed = c != '\n';
         continue;
@@ -34,7 +35,7 @@ std::string obj_problem(const std::string& path) {
         continuation = true;
         continue;
       }
-      if (is_line_end(c)) {
+      if (is_assimp_line_end(c)) {
         line_start = true;
         statement = false;
         continue;

@@ -6,6 +6,8 @@
 #include <iterator>
 #include <vector>
 
+#include "mesh_text.h"
+
 // The rules below follow the OFF reader of assimp 5.2.5 (Debian 12's libassimp5; its source:
 // code/AssetLib/OFF/OFFLoader.cpp, include/assimp/ParsingUtils.h, BaseImporter::TextFileToBuffer),
 // read, not copied.
@@ -13,7 +15,6 @@
 namespace cordgrasp::detail {
 namespace {
 
-bool is_line_end(char c) { return c == '\r' || c == '\n' || c == '\0' || c == '\f'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
 // Walks a NUL-terminated copy of the file as the reader does.
@@ -57,13 +58,6 @@ uint32_t wrapped_value(const std::string& digits) {
 }
 
 // Up to 24 characters of file text, bytes outside printable ASCII as '?'.
-std::string shown(const std::string& text) {
-  std::string out;
-  for (size_t k = 0; k < text.size() && k < 24; ++k)
-    out += (text[k] >= 0x20 && text[k] < 0x7f) ? text[k] : '?';
-  return out + (text.size() > 24 ? "..." : "");
-}
-
 }  // namespace
 
 std::string off_problem(const std::string& path, std::uintmax_t file_bytes) {
@@ -95,7 +89,7 @@ std::string off_problem(const std::string& path, std::uintmax_t file_bytes) {
   } else {
     if (c.at != first_token)  // "4 4 6": the reader takes the 4 for the homogeneous prefix
       return "an OFF file without the 'OFF' keyword whose first count starts with " +
-             shown(std::string(first_token, c.at)) +
+             shown_text(std::string(first_token, c.at)) +
              " (assimp 5.2 reads it as a prefix; add an 'OFF' line)";
     c.next_token();
     if (c.at >= c.end || !is_digit(*c.at)) return {};  // the reader refuses the header
@@ -115,7 +109,7 @@ std::string off_problem(const std::string& path, std::uintmax_t file_bytes) {
   c.next_token();
   for (const std::string* d : {&vertex_digits, &face_digits})
     if (count_value(*d) > file_bytes)
-      return "OFF header counts " + shown(*d) + " elements, more than the file's " +
+      return "OFF header counts " + shown_text(*d) + " elements, more than the file's " +
              std::to_string(file_bytes) + " bytes could hold";
   const unsigned long long vertices = count_value(vertex_digits);
   const unsigned long long faces = count_value(face_digits);
@@ -129,9 +123,9 @@ std::string off_problem(const std::string& path, std::uintmax_t file_bytes) {
   auto next_line = [&c, &line]() -> int {  // 1: a line, 0: the end, -1: too long
     if (*c.at == '\0') return 0;
     const char* begin = c.at;
-    while (!is_line_end(*c.at)) ++c.at;
+    while (!is_assimp_line_end(*c.at)) ++c.at;
     line.assign(begin, c.at);
-    while (is_line_end(*c.at) && *c.at != '\0') ++c.at;
+    while (is_assimp_line_end(*c.at) && *c.at != '\0') ++c.at;
     return line.size() >= 4096 ? -1 : 1;
   };
   const std::string too_long =
@@ -152,7 +146,7 @@ std::string off_problem(const std::string& path, std::uintmax_t file_bytes) {
     const unsigned long long n = count_value(n_digits);
     if (n == 0) return "a face without vertices";
     if (n > 9)
-      return "an OFF face of " + shown(n_digits) +
+      return "an OFF face of " + shown_text(n_digits) +
              " vertices (assimp 5.2 reads faces of 1 to 9 vertices)";
     for (unsigned long long k = 0; k < n; ++k) {
       face.skip_spaces();

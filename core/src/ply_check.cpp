@@ -7,6 +7,8 @@
 #include <set>
 #include <vector>
 
+#include "mesh_text.h"
+
 // The rules below follow the reader of assimp 5.2.5 (Debian 12's libassimp5; its source:
 // code/AssetLib/Ply/PlyParser.cpp, PlyLoader.cpp, include/assimp/IOStreamBuffer.h), read, not
 // copied: how it splits lines, reads the header and walks the body.
@@ -50,7 +52,7 @@ struct PlyElement {
   std::vector<PlyProperty> properties;
 };
 
-bool is_line_end(int c) { return c == '\r' || c == '\n' || c == '\0' || c == '\f'; }
+bool is_line_end(int c) { return c >= 0 && is_assimp_line_end(static_cast<char>(c)); }
 
 // The file through a buffer, split into lines as assimp's IOStreamBuffer::getNextLine splits
 // it: a line ends at CR, LF, NUL or FF (the one character is consumed), and a line that starts
@@ -171,18 +173,11 @@ bool is_value(const char* b, const char* e, Kind kind) {
   return b == e;
 }
 
-// Up to 24 characters of file text for a message, bytes outside printable ASCII as '?'.
-std::string quoted(const char* b, const char* e) {
-  std::string text = "'";
-  for (const char* c = b; c != e && c != b + 24; ++c) text += (*c >= 0x20 && *c < 0x7f) ? *c : '?';
-  return text + (e - b > 24 ? "...'" : "'");
-}
-std::string quoted(const std::string& s) { return quoted(s.data(), s.data() + s.size()); }
 
 std::string at_line(size_t line) { return "PLY line " + std::to_string(line) + ": "; }
 
 std::string entry_of(const PlyElement& element, unsigned long long entry) {
-  return "element " + quoted(element.name) + " entry " + std::to_string(entry);
+  return "element " + quoted_text(element.name) + " entry " + std::to_string(entry);
 }
 
 // ASCII body: one entry per line (as assimp splits lines), its values separated by spaces or
@@ -220,23 +215,23 @@ std::string check_ascii_body(AssimpLines& lines, const std::vector<PlyElement>& 
         --values_left;
         if (!p.count) {
           if (!is_value(b, e, p.value->kind))
-            return at_line(number) + quoted(b, e) + " is not a " + p.value->name + " (" +
+            return at_line(number) + quoted_text(b, e) + " is not a " + p.value->name + " (" +
                    entry_of(element, i) + ")";
           continue;
         }
         if (!is_value(b, e, Kind::kUnsigned))
-          return at_line(number) + quoted(b, e) + " is not a list count (" +
+          return at_line(number) + quoted_text(b, e) + " is not a list count (" +
                  entry_of(element, i) + ")";
         unsigned long long n = 0;
         for (const char* d = b; d != e && n <= values_left; ++d) n = 10 * n + unsigned(*d - '0');
         if (n > values_left)
-          return at_line(number) + entry_of(element, i) + " lists " + quoted(b, e) +
+          return at_line(number) + entry_of(element, i) + " lists " + quoted_text(b, e) +
                  " values, more than the " + std::to_string(values_left) + " on its line";
         for (unsigned long long k = 0; k < n; ++k) {
           next(&b, &e);
           --values_left;
           if (!is_value(b, e, p.value->kind))
-            return at_line(number) + quoted(b, e) + " is not a " + p.value->name + " (" +
+            return at_line(number) + quoted_text(b, e) + " is not a " + p.value->name + " (" +
                    entry_of(element, i) + ")";
         }
       }
@@ -364,22 +359,22 @@ std::string ply_problem(const std::string& path, std::uintmax_t file_bytes) {
           count ? count->substr(0, count->find_first_not_of("0123456789")) : std::string();
       if (keyword == "comment" && digits.find_first_not_of('0') != std::string::npos)
         return at_line(number) + "a comment assimp would read as an element of " +
-               quoted(*count) + " entries";
+               quoted_text(*count) + " entries";
     } else if (keyword == "element") {
       PlyElement element;
       if (words.size() != 3 || !all_digits(words[2].data(), words[2].data() + words[2].size()))
         return at_line(number) + "an element line is 'element NAME COUNT'";
       element.name = words[1];
       if (words[2].size() > 18 || (element.count = std::stoull(words[2])) > file_bytes)
-        return "PLY element " + quoted(element.name) + " claims " + words[2].substr(0, 24) +
+        return "PLY element " + quoted_text(element.name) + " claims " + words[2].substr(0, 24) +
                " entries, more than the file's " + std::to_string(file_bytes) + " bytes";
       if (element.count > 0 && std::find(std::begin(kElementNames), std::end(kElementNames),
                                          element.name) == std::end(kElementNames))
-        return at_line(number) + "element " + quoted(element.name) +
+        return at_line(number) + "element " + quoted_text(element.name) +
                ": assimp 5.2 reads the entries of vertex, face, tristrips, edge and material "
                "elements only (it would take these for none and misread the rest)";
       if (!names.insert(element.name).second)
-        return at_line(number) + "element " + quoted(element.name) + " defined twice";
+        return at_line(number) + "element " + quoted_text(element.name) + " defined twice";
       elements.push_back(element);
       in_properties = true;
     } else if (keyword == "property") {
@@ -400,16 +395,16 @@ std::string ply_problem(const std::string& path, std::uintmax_t file_bytes) {
                "a property line is 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'";
       property.value = find_type(words[list ? 3 : 1]);
       if (!property.value)
-        return at_line(number) + "unknown property type " + quoted(words[list ? 3 : 1]);
+        return at_line(number) + "unknown property type " + quoted_text(words[list ? 3 : 1]);
       if (list) {
         property.count = find_type(words[2]);
         if (!property.count || property.count->kind == Kind::kReal)
           return at_line(number) + "a list's count type must be an integer type, not " +
-                 quoted(words[2]);
+                 quoted_text(words[2]);
       }
       elements.back().properties.push_back(property);
     } else {
-      return at_line(number) + quoted(keyword) + " is not a PLY header keyword";
+      return at_line(number) + quoted_text(keyword) + " is not a PLY header keyword";
     }
   }
   return "PLY header without an 'end_header' line";

@@ -43,6 +43,19 @@ struct BadInput {
   std::string problem;  ///< expected part of the message
 };
 
+using NamedFiles = std::vector<std::pair<std::string, std::string>>;  ///< (file name, bytes)
+
+/// Writes each file into a fresh folder and expects it to load with the given counts.
+void expect_each_loads(const NamedFiles& files, size_t triangles, size_t vertices) {
+  const test::TempDir dir;
+  for (const auto& [name, content] : files) {
+    SCOPED_TRACE(name);
+    const Mesh m = load_mesh(dir.write(name, content));
+    EXPECT_EQ(m.triangles.size(), triangles);
+    EXPECT_EQ(m.vertices.size(), vertices);
+  }
+}
+
 TEST(LoadMesh, ThrowsWithPathWhenFileMissing) {
   const std::string path = test::test_data("meshes/no_such_mesh.obj");
   const std::string msg = load_error(path);
@@ -247,7 +260,7 @@ TEST(LoadMesh, PlyVariantsWritersProduceLoadTheBox) {
       s.replace(at, from.size(), to);
     return s;
   };
-  std::vector<std::pair<std::string, std::string>> files{
+  NamedFiles files{
       {"crlf.ply", replaced(text, "\n", "\r\n")},
       {"comments.ply",
        replaced(header, "comment",
@@ -301,13 +314,7 @@ TEST(LoadMesh, PlyVariantsWritersProduceLoadTheBox) {
       files.emplace_back("crlf_header_body_starts_with_lf.ply", bytes);
     }
   }
-  const test::TempDir dir;
-  for (const auto& [name, content] : files) {
-    SCOPED_TRACE(name);
-    const Mesh m = load_mesh(dir.write(name, content));
-    EXPECT_EQ(m.triangles.size(), 12u);
-    EXPECT_EQ(m.vertices.size(), 8u);
-  }
+  expect_each_loads(files, 12, 8);
 }
 
 // PLY that assimp 5.2 would read otherwise than its header says (and then size an array by a
@@ -372,7 +379,7 @@ TEST(LoadMesh, PlyFilesAssimpWouldMisreadAreRefused) {
 TEST(LoadMesh, OffVariantsLoadTheTetrahedron) {
   const std::string points = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
   const std::string faces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
-  const std::vector<std::pair<std::string, std::string>> files{
+  const NamedFiles files{
       {"plain.off", "OFF\n4 4 6\n" + points + faces},
       {"comments_crlf.off", "OFF\r\n# a comment\r\n4 4 6 # counts\r\n\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n"
                             "0 0 1\r\n3 0 2 1\r\n3 0 1 3\r\n3 0 3 2\r\n3 1 2 3\r\n"},
@@ -380,13 +387,8 @@ TEST(LoadMesh, OffVariantsLoadTheTetrahedron) {
       {"face_colors.off", "OFF\n4 4 6\n" + points +
                               "3 0 2 1 255 0 0\n3 0 1 3 0 255 0\n3 0 3 2 0 0 255\n3 1 2 3 9 9 9\n"},
   };
+  expect_each_loads(files, 4, 4);
   const test::TempDir dir;
-  for (const auto& [name, content] : files) {
-    SCOPED_TRACE(name);
-    const Mesh m = load_mesh(dir.write(name, content));
-    EXPECT_EQ(m.triangles.size(), 4u);
-    EXPECT_EQ(m.vertices.size(), 4u);
-  }
   // Without the keyword; a count starting with 4 would be read as the homogeneous prefix.
   EXPECT_EQ(load_mesh(dir.write("no_keyword.off", "3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"))
                 .triangles.size(),
