@@ -203,16 +203,17 @@ TEST(CliInterrupt, ValidateStopsBetweenTrialsAndKeepsTheGraspsWithEveryTrial) {
 TEST(CliInterrupt, SecondSigintEndsTheProcessAtOnce) {
   TempDir dir;
   write_box_plan(dir.file("plan.json"));
-  // The thorough protocol simulates each grasp for seconds: the second signal comes while the
-  // grasp in flight is still running and kills the process before it writes anything.
+  // The thorough protocol simulates each grasp for about 0.5 s (idle machine): both signals
+  // come within 0.15 s of the grasp's start, while it still runs; the second kills the process
+  // before it writes anything.
   Child child({"validate", "--plan", dir.file("plan.json"), "--protocol", "thorough", "--out",
                dir.file("sim.json")},
               dir.file("stdout.txt"));
   ASSERT_TRUE(child.started());
   ASSERT_TRUE(child.wait_for("validate: 1/3 grasps")) << child.stderr_text();
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // grasp 1 has started
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));  // grasp 1 has started
   child.signal(SIGINT);
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
   child.signal(SIGINT);
   const int status = child.wait();
   ASSERT_TRUE(WIFSIGNALED(status)) << "exit " << WEXITSTATUS(status) << "\n"
