@@ -733,28 +733,56 @@ PhaseResult GraspSimulation::close() {
   const int stall_steps = std::max(1, static_cast<int>(std::lround(s.params.stall_time_s / s.dt)));
   int stalled = 0;
   // Bounded: the stage also waits for the object to rest in the hand (rest_drift_m / _rad
-  // over the stall time), its effort already capped since the reach (no ramp).
+  // over the stall time), its effort already capped since the reach (no ramp); it ends early
+  // once the object, touched in this close, has been out of the hand's contact for
+  // no_contact_exit_time_s (lost).
+  const bool lost_exit = s.bounded() && s.params.exit_on_failure;
+  const int no_contact_steps =
+      std::max(1, static_cast<int>(std::lround(s.params.no_contact_exit_time_s / s.dt)));
+  int without_contact = 0;
+  bool at_rest = false;
   Eigen::Isometry3d X_BO_still = s.X_BO();
+  Eigen::VectorXd q_still = bullet::hand_joint_positions(*s.hand_body, n);
   for (int k = 1; k <= max_steps && !s.blew_up; ++k) {
     s.squeeze_fraction = s.bounded() ? 1.0
                                      : std::min(1.0, k * s.dt /
                                                          std::max(s.params.squeeze_ramp_s, s.dt));
     s.step(X_WB0);
-    const Eigen::VectorXd qd = bullet::hand_joint_velocities(*s.hand_body, n);
     bool still = true;
-    for (size_t a = 0; a < s.actor_joints.size(); ++a)
-      if (std::abs(qd[s.actor_joints[a]]) > s.params.stall_speed * s.actor_speed[a]) still = false;
-    if (still && s.bounded()) {
+    if (s.bounded()) {
+      // At rest over the window: each actor joint within stall_speed × its speed × the stall
+      // time of where the window began (a finger pressing the object jitters at contact-solver
+      // speeds without going anywhere), and the object within the rest drift.
+      const Eigen::VectorXd q = bullet::hand_joint_positions(*s.hand_body, n);
+      for (size_t a = 0; a < s.actor_joints.size(); ++a) {
+        const int j = s.actor_joints[a];
+        if (std::abs(q[j] - q_still[j]) > s.params.stall_speed * s.actor_speed[a] * s.params.stall_time_s)
+          still = false;
+      }
       double turned = 0.0;
       const double drift = s.pose_change(X_BO_still, &turned);
-      still = drift < s.params.rest_drift_m && turned < s.params.rest_drift_rad;
+      still = still && drift < s.params.rest_drift_m && turned < s.params.rest_drift_rad;
+      if (!still) q_still = q;
+    } else {
+      const Eigen::VectorXd qd = bullet::hand_joint_velocities(*s.hand_body, n);
+      for (size_t a = 0; a < s.actor_joints.size(); ++a)
+        if (std::abs(qd[s.actor_joints[a]]) > s.params.stall_speed * s.actor_speed[a]) still = false;
     }
     stalled = still ? stalled + 1 : 0;
     if (!still) X_BO_still = s.X_BO();
-    if (k >= min_steps && stalled >= stall_steps && s.squeeze_fraction >= 1.0) break;
+    if (k >= min_steps && stalled >= stall_steps && s.squeeze_fraction >= 1.0) {
+      at_rest = true;
+      break;
+    }
+    // Counted once the fingers have touched the object in this close (a finger may reach its
+    // contact only in the squeeze's travel).
+    if (r.max_contact_count > 0) without_contact = s.last_contact_count > 0 ? 0 : without_contact + 1;
+    if (lost_exit && without_contact >= no_contact_steps) break;
   }
   s.squeeze_fraction = 1.0;
   s.finish(r, s.grasp.X_OB.inverse());
+  if (!at_rest && !s.blew_up)
+    r.detail = without_contact >= no_contact_steps ? "squeeze, out of contact" : "squeeze time limit";
   // Closing is judged by contact only; the object may well move while the fingers close.
   if (r.outcome == Outcome::kSlipped) r.outcome = Outcome::kHeld;
   s.X_BO_ref = s.X_BO();

@@ -118,6 +118,7 @@ SimResult validate_grasp(const Mesh& mesh, const HandModel& hand, const Grasp& g
       }
     }
     if (!ready) {
+      if (const PhaseResult* close = result.phase("close")) show_failure(sim, *close);
       for (const char* name : {"lift", "shake", "gravity6"}) {
         const bool wanted = (std::string(name) == "lift" && tests.lift) ||
                             (std::string(name) == "shake" && tests.shake) ||

@@ -329,8 +329,62 @@ TEST(ValidateGrasp, BoundedCloseKeepsThePinchedBoxWhereItWasPlanned) {
   const SimResult r = validate_grasp(box(), gripper(), pinch, gripper_params(Protocol::kStandard));
   EXPECT_EQ(r.outcome, Outcome::kHeld);
   EXPECT_LT(r.phase("close")->translation_m, kPlannedShiftTol_m);
+  // The squeeze ended with the pads and the box at rest, not at its time limit.
+  EXPECT_EQ(r.phase("close")->detail, "");
   ASSERT_EQ(r.planned_contact_offsets_m.size(), pinch.contacts.size());
   for (const double d : r.planned_contact_offsets_m) EXPECT_LT(d, kContactOffsetTol_m);
+}
+
+/// A wedge along y_O: a triangular prism whose base (`base_m` wide) lies at z = −height/2 and
+/// whose apex edge lies at z = +height/2, `base_m` long.
+Mesh make_wedge_mesh(double base_m, double height_m) {
+  Mesh m;
+  m.name = "wedge";
+  for (const double y : {-0.5 * base_m, 0.5 * base_m}) {
+    m.vertices.emplace_back(-0.5 * base_m, y, -0.5 * height_m);
+    m.vertices.emplace_back(0.5 * base_m, y, -0.5 * height_m);
+    m.vertices.emplace_back(0.0, y, 0.5 * height_m);
+  }
+  m.triangles = {{0, 2, 1}, {3, 4, 5}, {0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {2, 0, 3}, {2, 3, 5}};
+  return m;
+}
+
+TEST(ValidateGrasp, BoundedCloseEndsOnceTheSqueezedOutObjectLeavesTheHand) {
+  // A wedge, apex toward the palm, pinched on its sloped faces without friction: the pads'
+  // pushes along the face normals squeeze it out of the hand, away from the palm (gravity is
+  // off while closing). The close ends once it has touched no link for no_contact_exit_time_s,
+  // with the outcome of a close that runs to its time limit, and sooner.
+  constexpr double kWedgeBase_m = 0.05;
+  constexpr double kWedgeHeight_m = 0.05;
+  const Mesh wedge = make_wedge_mesh(kWedgeBase_m, kWedgeHeight_m);
+  const double half_width = 0.25 * kWedgeBase_m;  // at z = 0, half way up
+  Grasp pinch = test::top_down_pinch(gripper(), Eigen::Vector3d::Zero(), half_width, kOpenGripper_m);
+  const auto X_OL = link_poses(gripper(), pinch.q, pinch.X_OB);
+  for (const Joint& joint : gripper().joints) {
+    if (joint.type != JointType::kPrismatic) continue;
+    const double side = X_OL[static_cast<size_t>(joint.child_link)].translation().x() > 0 ? 1 : -1;
+    Contact c;
+    c.link = joint.child_link;
+    c.p_O = Eigen::Vector3d(side * half_width, 0, 0);
+    c.n_O = Eigen::Vector3d(side * kWedgeHeight_m, 0, 0.5 * kWedgeBase_m).normalized();
+    pinch.contacts.push_back(c);
+  }
+  SimParams params = gripper_params(Protocol::kStandard);
+  params.contact.mu = 0.0;
+  const SimTests lift_only{true, false, false};
+  const SimResult r = validate_grasp(wedge, gripper(), pinch, params, lift_only);
+  SimParams to_the_limit = params;
+  to_the_limit.exit_on_failure = false;
+  const SimResult full = validate_grasp(wedge, gripper(), pinch, to_the_limit, lift_only);
+  const PhaseResult* close = r.phase("close");
+  const PhaseResult* full_close = full.phase("close");
+  ASSERT_NE(close, nullptr);
+  ASSERT_NE(full_close, nullptr);
+  EXPECT_GT(close->max_contact_count, 0);
+  EXPECT_EQ(close->outcome, Outcome::kDropped);
+  EXPECT_EQ(close->detail, "squeeze, out of contact");
+  EXPECT_EQ(full_close->outcome, Outcome::kDropped);
+  EXPECT_LT(close->steps, full_close->steps);
 }
 
 TEST(ValidateGrasp, FlagsAPreshapeHandPlacedIntoTheObject) {

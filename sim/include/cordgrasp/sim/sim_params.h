@@ -173,7 +173,8 @@ struct SimParams {
   double squeeze_max_time_s = 0.3;    ///< close: squeeze stage time limit (preset)
   double squeeze_ramp_s = 0.1;        ///< close: the squeeze effort ramps in linearly over this
   double squeeze_min_time_s = 0.05;   ///< close: stall is not tested before this
-  /// close: actor joints slower than this × their |direction_speed| [rad/s or m/s]...
+  /// close: actor joints slower than this × their |direction_speed| [rad/s or m/s] (bounded
+  /// close: moved less than this × that speed × stall_time_s over the window)...
   double stall_speed = 0.02;
   double stall_time_s = 0.05;         ///< ...for this long have stalled
   double lift_height_m = 0.10;        ///< lift: rise along +z_W...
