@@ -740,7 +740,7 @@ PhaseResult GraspSimulation::close() {
   const int no_contact_steps =
       std::max(1, static_cast<int>(std::lround(s.params.no_contact_exit_time_s / s.dt)));
   int without_contact = 0;
-  bool at_rest = false;
+  bool at_rest = false, lost = false;
   Eigen::Isometry3d X_BO_still = s.X_BO();
   Eigen::VectorXd q_still = bullet::hand_joint_positions(*s.hand_body, n);
   for (int k = 1; k <= max_steps && !s.blew_up; ++k) {
@@ -777,12 +777,15 @@ PhaseResult GraspSimulation::close() {
     // Counted once the fingers have touched the object in this close (a finger may reach its
     // contact only in the squeeze's travel).
     if (r.max_contact_count > 0) without_contact = s.last_contact_count > 0 ? 0 : without_contact + 1;
-    if (lost_exit && without_contact >= no_contact_steps) break;
+    if (lost_exit && without_contact >= no_contact_steps) {
+      lost = true;
+      break;
+    }
   }
   s.squeeze_fraction = 1.0;
   s.finish(r, s.grasp.X_OB.inverse());
   if (!at_rest && !s.blew_up)
-    r.detail = without_contact >= no_contact_steps ? "squeeze, out of contact" : "squeeze time limit";
+    r.detail = lost ? "squeeze, out of contact" : "squeeze time limit";
   // Closing is judged by contact only; the object may well move while the fingers close.
   if (r.outcome == Outcome::kSlipped) r.outcome = Outcome::kHeld;
   s.X_BO_ref = s.X_BO();
