@@ -198,10 +198,10 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
     fail(path, "unknown mesh format '" + ext + "' (use OBJ, STL, PLY, OFF, DAE or glTF)");
   std::string lower_ext = ext;
   for (char& c : lower_ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  // assimp picks its reader by the extension alone (one reader per extension here): the PLY,
-  // OFF and OBJ readers read what the extension names, whatever the file holds.
   if (const std::string mark = detail::file_utf32_mark_problem(path); !mark.empty())
     fail(path, mark);
+  // assimp picks its reader by the extension alone (one reader per extension here): the PLY,
+  // OFF and OBJ readers read what the extension names, whatever the file holds.
   const std::string problem = lower_ext == ".ply"   ? detail::ply_problem(path, file_bytes)
                               : lower_ext == ".off" ? detail::off_problem(path, file_bytes)
                               : lower_ext == ".obj" ? detail::obj_problem(path)

@@ -57,7 +57,6 @@ uint32_t wrapped_value(const std::string& digits) {
   return value;
 }
 
-// Up to 24 characters of file text, bytes outside printable ASCII as '?'.
 }  // namespace
 
 std::string off_problem(const std::string& path, std::uintmax_t file_bytes) {
@@ -65,9 +64,9 @@ std::string off_problem(const std::string& path, std::uintmax_t file_bytes) {
   std::vector<char> data{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   if (data.size() < 8) return {};  // the reader refuses it ("File is too small")
   const auto byte = [&data](size_t k) { return static_cast<unsigned char>(data[k]); };
-  // The reader converts UTF-16 and UTF-32 text (some of it wrongly) and drops a UTF-8 BOM.
-  if ((byte(0) == 0xFF && byte(1) == 0xFE) || (byte(0) == 0xFE && byte(1) == 0xFF) ||
-      (byte(0) == 0 && byte(1) == 0 && byte(2) == 0xFE && byte(3) == 0xFF))
+  // The reader converts UTF-16 text (some of it wrongly) and drops a UTF-8 BOM (load_mesh
+  // refuses a UTF-32 mark before, for every reader: mesh_text.h).
+  if ((byte(0) == 0xFF && byte(1) == 0xFE) || (byte(0) == 0xFE && byte(1) == 0xFF))
     return "OFF text in UTF-16 or UTF-32 (save it as ASCII or UTF-8)";
   if (byte(0) == 0xEF && byte(1) == 0xBB && byte(2) == 0xBF) data.erase(data.begin(), data.begin() + 3);
   data.push_back('\0');
