@@ -2,29 +2,34 @@
 
 #include <algorithm>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 
 namespace cordgrasp {
 namespace {
 
+/// A triangle being placed: its split key and its index in the triangle list. The key sits
+/// beside the index so that a split reads keys in sequence, not through an index.
+struct Item {
+  Eigen::Vector3d key;  ///< kCornerSum: corner sum; kCentroidThenIndex: centroid
+  int id = 0;
+};
+
 struct Builder {
-  const Mesh& mesh;
+  const std::vector<Eigen::Vector3d>& vertices;
+  const std::vector<Eigen::Vector3i>& triangles;
   int max_leaf;
   MeshBvhSplit split;
-  std::vector<Eigen::Vector3d> centroid;
-  std::vector<Eigen::Vector3d> corner_sum;  // kCornerSum only
-  std::vector<int> order;
+  std::vector<Item> items;
   MeshBvh& bvh;
 
   void bounds(int begin, int end, Eigen::Vector3d& lo, Eigen::Vector3d& hi) const {
     lo.setConstant(std::numeric_limits<double>::infinity());
     hi = -lo;
     for (int k = begin; k < end; ++k) {
-      const Eigen::Vector3i& t = mesh.triangles[order[k]];
+      const Eigen::Vector3i& t = triangles[size_t(items[size_t(k)].id)];
       for (int c = 0; c < 3; ++c) {
-        lo = lo.cwiseMin(mesh.vertices[t[c]]);
-        hi = hi.cwiseMax(mesh.vertices[t[c]]);
+        lo = lo.cwiseMin(vertices[size_t(t[c])]);
+        hi = hi.cwiseMax(vertices[size_t(t[c])]);
       }
     }
   }
@@ -36,7 +41,7 @@ struct Builder {
     node.radius = node.half.norm();
   }
 
-  /// Builds the subtree of order[begin, end); a node's box is its triangles' corners (leaf) or
+  /// Builds the subtree of items[begin, end); a node's box is its triangles' corners (leaf) or
   /// the union of its children's boxes (the same box, in linear total time).
   int build(int begin, int end) {
     const int index = int(bvh.nodes.size());
@@ -51,22 +56,27 @@ struct Builder {
       bvh.nodes[index].count = end - begin;
       return index;
     }
-    Eigen::Vector3d clo = centroid[order[begin]], chi = clo;
+    Eigen::Vector3d klo = items[size_t(begin)].key, khi = klo;
     for (int k = begin + 1; k < end; ++k) {
-      clo = clo.cwiseMin(centroid[order[k]]);
-      chi = chi.cwiseMax(centroid[order[k]]);
+      klo = klo.cwiseMin(items[size_t(k)].key);
+      khi = khi.cwiseMax(items[size_t(k)].key);
     }
+    // Centroid bounds: for kCornerSum the centroid is sum·(1/3), and rounding a product is
+    // monotone, so the bounds of the centroids are the key bounds times 1/3, exactly.
+    const Eigen::Vector3d clo = split == MeshBvhSplit::kCornerSum ? Eigen::Vector3d(klo * (1.0 / 3.0)) : klo;
+    const Eigen::Vector3d chi = split == MeshBvhSplit::kCornerSum ? Eigen::Vector3d(khi * (1.0 / 3.0)) : khi;
     int axis = 0;
     (chi - clo).maxCoeff(&axis);
     const int mid = begin + (end - begin) / 2;
+    const auto first = items.begin() + begin;
     if (split == MeshBvhSplit::kCornerSum)
-      std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
-                       [&](int a, int b) { return corner_sum[a][axis] < corner_sum[b][axis]; });
+      std::nth_element(first, items.begin() + mid, items.begin() + end,
+                       [axis](const Item& a, const Item& b) { return a.key[axis] < b.key[axis]; });
     else
-      std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
-                       [&](int a, int b) {
-                         const double ca = centroid[a][axis], cb = centroid[b][axis];
-                         return ca < cb || (ca == cb && a < b);
+      std::nth_element(first, items.begin() + mid, items.begin() + end,
+                       [axis](const Item& a, const Item& b) {
+                         const double ca = a.key[axis], cb = b.key[axis];
+                         return ca < cb || (ca == cb && a.id < b.id);
                        });
     build(begin, mid);
     const int right = build(mid, end);
@@ -80,45 +90,48 @@ struct Builder {
   }
 };
 
+/// The BVH of `triangles` over `vertices` (bvh.vertices is set by the caller).
+void build_bvh_nodes(const std::vector<Eigen::Vector3d>& vertices,
+                     const std::vector<Eigen::Vector3i>& triangles, int max_leaf_triangles,
+                     MeshBvhSplit split, MeshBvh& bvh) {
+  const int n = int(triangles.size());
+  if (n == 0) return;
+  Builder b{vertices, triangles, max_leaf_triangles, split, {}, bvh};
+  b.items.resize(size_t(n));
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Vector3i& t = triangles[size_t(k)];
+    const Eigen::Vector3d sum =
+        vertices[size_t(t[0])] + vertices[size_t(t[1])] + vertices[size_t(t[2])];
+    b.items[size_t(k)].key = split == MeshBvhSplit::kCornerSum ? sum : Eigen::Vector3d(sum / 3.0);
+    b.items[size_t(k)].id = k;
+  }
+  // Median splits leave at least ⌈max_leaf / 2⌉ triangles in a leaf (fewer only for a mesh
+  // that small): at most 2·leaves − 1 nodes, reserved at once (no regrowth copy).
+  const int min_leaf = std::max(1, (max_leaf_triangles + 1) / 2);
+  bvh.nodes.reserve(size_t(2 * (n / min_leaf + 1)));
+  b.build(0, n);
+  bvh.triangle_ids.resize(size_t(n));
+  bvh.triangles.resize(size_t(n));
+  for (int k = 0; k < n; ++k) {
+    const int id = b.items[size_t(k)].id;
+    bvh.triangle_ids[size_t(k)] = id;
+    bvh.triangles[size_t(k)] = triangles[size_t(id)];
+  }
+}
+
 }  // namespace
 
 MeshBvh build_mesh_bvh(const Mesh& mesh, int max_leaf_triangles, MeshBvhSplit split) {
   if (max_leaf_triangles < 1) throw std::invalid_argument("build_mesh_bvh: max_leaf_triangles < 1");
   MeshBvh bvh;
   bvh.vertices = mesh.vertices;
-  const int n = int(mesh.triangles.size());
-  if (n == 0) return bvh;
-  Builder b{mesh, max_leaf_triangles, split, {}, {}, {}, bvh};
-  b.centroid.resize(n);
-  if (split == MeshBvhSplit::kCornerSum) b.corner_sum.resize(n);
-  for (int k = 0; k < n; ++k) {
-    const Eigen::Vector3i& t = mesh.triangles[k];
-    const Eigen::Vector3d sum = mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]];
-    if (split == MeshBvhSplit::kCornerSum) {
-      b.corner_sum[k] = sum;
-      b.centroid[k] = sum * (1.0 / 3.0);
-    } else {
-      b.centroid[k] = sum / 3.0;
-    }
-  }
-  b.order.resize(n);
-  std::iota(b.order.begin(), b.order.end(), 0);
-  // Median splits leave at least ⌈max_leaf / 2⌉ triangles in a leaf (fewer only for a mesh
-  // that small): at most 2·leaves − 1 nodes, reserved at once (no regrowth copy).
-  const int min_leaf = std::max(1, (max_leaf_triangles + 1) / 2);
-  bvh.nodes.reserve(size_t(2 * (n / min_leaf + 1)));
-  b.build(0, n);
-  bvh.triangle_ids = b.order;
-  bvh.triangles.resize(n);
-  for (int k = 0; k < n; ++k) bvh.triangles[k] = mesh.triangles[b.order[k]];
+  build_bvh_nodes(mesh.vertices, mesh.triangles, max_leaf_triangles, split, bvh);
   return bvh;
 }
 
 MeshBvh build_object_bvh(const Mesh& mesh) {
-  Mesh usable;
-  usable.name = mesh.name;
-  usable.vertices = mesh.vertices;
-  usable.triangles.reserve(mesh.triangles.size());
+  std::vector<Eigen::Vector3i> usable;  // triangles of non-zero area
+  usable.reserve(mesh.triangles.size());
   std::vector<int> ids;  // usable triangle -> mesh triangle
   ids.reserve(mesh.triangles.size());
   for (size_t k = 0; k < mesh.triangles.size(); ++k) {
@@ -127,13 +140,15 @@ MeshBvh build_object_bvh(const Mesh& mesh) {
     const Eigen::Vector3d& b = mesh.vertices[static_cast<size_t>(t[1])];
     const Eigen::Vector3d& c = mesh.vertices[static_cast<size_t>(t[2])];
     if ((b - a).cross(c - a).squaredNorm() <= 0.0) continue;
-    usable.triangles.push_back(t);
+    usable.push_back(t);
     ids.push_back(static_cast<int>(k));
   }
-  const int leaf = static_cast<int>(usable.triangles.size()) > kLargeMeshTriangles
+  const int leaf = static_cast<int>(usable.size()) > kLargeMeshTriangles
                        ? kLargeMeshLeafTriangles
                        : 4;
-  MeshBvh bvh = build_mesh_bvh(usable, leaf, MeshBvhSplit::kCornerSum);
+  MeshBvh bvh;
+  bvh.vertices = mesh.vertices;
+  build_bvh_nodes(mesh.vertices, usable, leaf, MeshBvhSplit::kCornerSum, bvh);
   for (int& id : bvh.triangle_ids) id = ids[static_cast<size_t>(id)];
   return bvh;
 }

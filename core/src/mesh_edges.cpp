@@ -13,74 +13,73 @@ MeshEdges build_mesh_edges(const Mesh& mesh) {
   const int nt = int(mesh.triangles.size());
 
   // Weld: referenced vertices with equal coordinates share an id (ids in vertex order).
-  std::vector<char> used(nv, 0);
-  for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) used[t[k]] = 1;
-  out.weld.assign(nv, -1);
+  out.weld.assign(size_t(nv), -1);
   {
+    std::vector<char> used(size_t(nv), 0);
+    for (const auto& t : mesh.triangles)
+      for (int k = 0; k < 3; ++k) used[size_t(t[k])] = 1;
     WeldTable table{static_cast<size_t>(nv)};
-    const auto point_of = [&](int i) -> const Eigen::Vector3d& { return mesh.vertices[i]; };
+    const auto point_of = [&](int i) -> const Eigen::Vector3d& { return mesh.vertices[size_t(i)]; };
     for (int i = 0; i < nv; ++i) {
-      if (!used[i]) continue;
-      const int same = table.find_or_insert(mesh.vertices[i], i, point_of);
-      out.weld[i] = same >= 0 ? out.weld[same] : out.welded_vertices++;
+      if (!used[size_t(i)]) continue;
+      const int same = table.find_or_insert(mesh.vertices[size_t(i)], i, point_of);
+      out.weld[size_t(i)] = same >= 0 ? out.weld[size_t(same)] : out.welded_vertices++;
     }
   }
 
-  // Undirected edges, bucketed by their lower welded id (counting sort, linear time); each
-  // bucket holds (hi, 3·triangle + side) in triangle order, then is stably sorted by hi: the
-  // uses of an edge come in (triangle, side) order.
-  const auto side_ends = [&](int t, int s) {
-    return std::array<int, 2>{out.weld[mesh.triangles[t][s]],
-                              out.weld[mesh.triangles[t][(s + 1) % 3]]};
+  // Sides bucketed by their edge's lower welded id (counting sort, linear time), each bucket
+  // sorted by the higher id: the sides of one edge are then adjacent.
+  const auto end_ids = [&](int code) {
+    const Eigen::Vector3i& t = mesh.triangles[size_t(code / 3)];
+    const int s = code % 3;
+    const int a = out.weld[size_t(t[s])], b = out.weld[size_t(t[(s + 1) % 3])];
+    return std::pair<int, int>{std::min(a, b), std::max(a, b)};
   };
   std::vector<int> bucket(size_t(out.welded_vertices) + 1, 0);
-  for (int t = 0; t < nt; ++t)
-    for (int s = 0; s < 3; ++s) {
-      const auto [a, b] = side_ends(t, s);
-      if (a != b) ++bucket[size_t(std::min(a, b)) + 1];
-    }
+  for (int code = 0; code < 3 * nt; ++code) {
+    const auto [lo, hi] = end_ids(code);
+    if (lo != hi) ++bucket[size_t(lo) + 1];
+  }
   std::partial_sum(bucket.begin(), bucket.end(), bucket.begin());
-  struct Entry {
-    int hi, side_code;  // side_code = 3·triangle + side
-  };
-  std::vector<Entry> entries(size_t(bucket.back()));
+  std::vector<int> sides(size_t(bucket.back()));
   {
     std::vector<int> fill(bucket.begin(), bucket.end() - 1);
-    for (int t = 0; t < nt; ++t)
-      for (int s = 0; s < 3; ++s) {
-        const auto [a, b] = side_ends(t, s);
-        if (a == b) continue;  // collapsed side of a degenerate triangle
-        entries[size_t(fill[size_t(std::min(a, b))]++)] = {std::max(a, b), 3 * t + s};
-      }
+    for (int code = 0; code < 3 * nt; ++code) {
+      const auto [lo, hi] = end_ids(code);
+      if (lo != hi) sides[size_t(fill[size_t(lo)]++)] = code;
+    }
   }
-  const auto by_hi = [](const Entry& x, const Entry& y) { return x.hi < y.hi; };
-  out.tri_edge.assign(nt, {-1, -1, -1});
-  out.uses.reserve(entries.size());
-  // A closed surface uses each edge twice: reserving half the uses avoids the growth copies
-  // (a scan of millions of triangles) in the common case.
-  out.edges.reserve(entries.size() / 2 + 1);
-  out.first_use.reserve(entries.size() / 2 + 2);
+  const auto hi_of = [&](int code) { return end_ids(code).second; };
+  const auto by_hi = [&](int x, int y) { return hi_of(x) < hi_of(y); };
+  out.twin.assign(size_t(3) * size_t(nt), MeshEdges::kCollapsed);
   for (int lo = 0; lo < out.welded_vertices; ++lo) {
-    Entry* first = entries.data() + bucket[size_t(lo)];
-    Entry* last = entries.data() + bucket[size_t(lo) + 1];
-    if (last - first <= 32) {  // insertion sort: stable, and buckets are small on real meshes
-      for (Entry* k = first + 1; k < last; ++k)
-        for (Entry* j = k; j > first && by_hi(*j, *(j - 1)); --j) std::swap(*j, *(j - 1));
+    int* first = sides.data() + bucket[size_t(lo)];
+    int* last = sides.data() + bucket[size_t(lo) + 1];
+    if (last - first <= 32) {  // insertion sort: buckets are small on real meshes
+      for (int* k = first + 1; k < last; ++k)
+        for (int* j = k; j > first && by_hi(*j, *(j - 1)); --j) std::swap(*j, *(j - 1));
     } else {
-      std::stable_sort(first, last, by_hi);
+      std::sort(first, last, by_hi);
     }
-    for (Entry* k = first; k < last; ++k) {
-      if (k == first || k->hi != (k - 1)->hi) {
-        out.edges.push_back({lo, k->hi});
-        out.first_use.push_back(int(out.uses.size()));
+    for (int* k = first; k < last;) {
+      const int hi = hi_of(*k);
+      int* group_end = k + 1;
+      while (group_end < last && hi_of(*group_end) == hi) ++group_end;
+      ++out.edges;
+      const long uses = group_end - k;
+      if (uses == 1) {
+        out.twin[size_t(*k)] = MeshEdges::kBoundary;
+        ++out.boundary_edges;
+      } else if (uses == 2) {
+        out.twin[size_t(k[0])] = k[1];
+        out.twin[size_t(k[1])] = k[0];
+      } else {
+        for (int* j = k; j < group_end; ++j) out.twin[size_t(*j)] = MeshEdges::kNonManifold;
+        ++out.non_manifold_edges;
       }
-      const int t = k->side_code / 3, s = k->side_code % 3;
-      out.tri_edge[t][s] = int(out.edges.size()) - 1;
-      out.uses.push_back({t, side_ends(t, s)[0] < side_ends(t, s)[1]});
+      k = group_end;
     }
   }
-  out.first_use.push_back(int(out.uses.size()));
   return out;
 }
 

@@ -1,33 +1,51 @@
 #pragma once
-// Private to core: welded vertex ids and the undirected edge table of a triangle soup, shared
-// by mesh_topology, closed_mesh_volume and orient_triangles.
-#include <array>
-#include <cstdint>
+// Private to core: welded vertex ids and the edge sharing of a triangle soup, shared by
+// mesh_topology, closed_mesh_volume and orient_triangles.
 #include <vector>
 
 #include "cordgrasp/core/mesh.h"
 
 namespace cordgrasp::detail {
 
-/// One use of an undirected edge by a triangle.
-struct EdgeUse {
-  int tri = 0;           ///< triangle index
-  bool forward = false;  ///< the triangle walks the edge from its lower to its higher vertex id
-};
-
-/// Edge table of a soup after welding vertices at identical coordinates (linear time).
+/// How the triangle sides of a soup share undirected edges, after welding vertices at identical
+/// coordinates (linear time). A side is named by its code 3·triangle + side (side s runs from
+/// corner s to corner s + 1).
 struct MeshEdges {
-  std::vector<int> weld;                     ///< vertex index → welded id (vertex-index order)
-  int welded_vertices = 0;                   ///< distinct referenced positions
-  std::vector<std::array<int, 2>> edges;     ///< (lo, hi) welded ids, sorted
-  std::vector<int> first_use;                ///< edges[e] is used by uses[first_use[e] ..
-  std::vector<EdgeUse> uses;                 ///<   .. first_use[e + 1]) (CSR layout)
-  std::vector<std::array<int, 3>> tri_edge;  ///< edge index of each triangle side, −1 if collapsed
+  static constexpr int kBoundary = -1;     ///< the side's edge is used by this side only
+  static constexpr int kNonManifold = -2;  ///< the side's edge is used by three or more sides
+  static constexpr int kCollapsed = -3;    ///< both ends weld to one vertex: not an edge
 
-  int use_count(int e) const { return first_use[e + 1] - first_use[e]; }
+  std::vector<int> weld;   ///< vertex index → welded id (vertex-index order), −1 if unused
+  int welded_vertices = 0; ///< distinct referenced positions
+  /// Per side code: the other side of its edge when exactly two sides use the edge, else one of
+  /// kBoundary, kNonManifold, kCollapsed.
+  std::vector<int> twin;
+  int edges = 0;               ///< distinct undirected edges
+  int boundary_edges = 0;      ///< edges used by one side
+  int non_manifold_edges = 0;  ///< edges used by three or more sides
+
+  /// Every edge is shared by exactly two triangle sides (mesh_topology's `closed`, given triangles).
+  bool every_edge_used_twice() const { return boundary_edges == 0 && non_manifold_edges == 0; }
+  /// The side walks its edge from the lower to the higher welded id.
+  bool forward(const Mesh& mesh, int side_code) const {
+    const Eigen::Vector3i& t = mesh.triangles[size_t(side_code / 3)];
+    const int s = side_code % 3;
+    return weld[size_t(t[s])] < weld[size_t(t[(s + 1) % 3])];
+  }
 };
 
-/// Welds referenced vertices with identical coordinates and builds the edge table.
+/// Welds referenced vertices with identical coordinates and pairs the triangle sides.
 MeshEdges build_mesh_edges(const Mesh& mesh);
+
+/// Which triangles orient_triangles() reverses, without changing the mesh.
+struct OrientationFlips {
+  std::vector<char> flip;  ///< per triangle: 1 if its winding is to be reversed
+  int patches = 0;
+  int closed_patches = 0;
+  bool orientable = true;
+};
+
+/// orient_triangles()'s decision for `mesh` from its edge sharing `me`.
+OrientationFlips orientation_flips(const Mesh& mesh, const MeshEdges& me);
 
 }  // namespace cordgrasp::detail

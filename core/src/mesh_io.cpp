@@ -76,6 +76,9 @@ struct SoupBuilder {
     for (unsigned m = 0; m < node.mNumMeshes; ++m) {
       const aiMesh& am = *scene.mMeshes[node.mMeshes[m]];
       faces_seen += int(am.mNumFaces);
+      // Welded id of each of the mesh's vertices once it is used (a reader that shares vertices
+      // between faces, as PLY's does, then welds each vertex once, not once per face corner).
+      std::vector<int> welded(am.mNumVertices, -1);
       for (unsigned f = 0; f < am.mNumFaces; ++f) {
         const aiFace& face = am.mFaces[f];
         if (face.mNumIndices != 3) continue;  // points and lines are not surface
@@ -96,7 +99,13 @@ struct SoupBuilder {
           ++non_finite_triangles;
           continue;
         }
-        mesh.triangles.emplace_back(add_vertex(p[0]), add_vertex(p[1]), add_vertex(p[2]));
+        int ids[3];
+        for (int k = 0; k < 3; ++k) {
+          int& id = welded[face.mIndices[k]];
+          if (id < 0) id = add_vertex(p[k]);
+          ids[k] = id;
+        }
+        mesh.triangles.emplace_back(ids[0], ids[1], ids[2]);
       }
     }
     for (unsigned c = 0; c < node.mNumChildren; ++c) add_node(scene, *node.mChildren[c], X);

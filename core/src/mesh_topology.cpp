@@ -25,14 +25,13 @@ MeshTopology mesh_topology(const Mesh& mesh) {
   const detail::MeshEdges me = detail::build_mesh_edges(mesh);
   MeshTopology topo;
   topo.vertices = me.welded_vertices;
-  topo.edges = int(me.edges.size());
+  topo.edges = me.edges;
   topo.triangles = int(mesh.triangles.size());
-  for (int e = 0; e < topo.edges; ++e) {
-    const int n = me.use_count(e);
-    if (n == 1) ++topo.boundary_edges;
-    if (n >= 3) ++topo.non_manifold_edges;
-    if (n == 2 && me.uses[me.first_use[e]].forward == me.uses[me.first_use[e] + 1].forward)
-      ++topo.misoriented_edges;
+  topo.boundary_edges = me.boundary_edges;
+  topo.non_manifold_edges = me.non_manifold_edges;
+  for (int side = 0; side < 3 * topo.triangles; ++side) {
+    const int other = me.twin[size_t(side)];
+    if (other > side && me.forward(mesh, side) == me.forward(mesh, other)) ++topo.misoriented_edges;
   }
   DisjointSets sets(me.welded_vertices);
   for (const auto& t : mesh.triangles) {

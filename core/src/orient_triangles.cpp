@@ -8,12 +8,14 @@
 
 namespace cordgrasp {
 
-OrientReport orient_triangles(Mesh& mesh) {
-  const detail::MeshEdges me = detail::build_mesh_edges(mesh);
+namespace detail {
+
+OrientationFlips orientation_flips(const Mesh& mesh, const MeshEdges& me) {
   const int nt = int(mesh.triangles.size());
-  OrientReport report;
+  OrientationFlips out;
+  std::vector<char>& flip = out.flip;
+  flip.assign(size_t(nt), 0);
   std::vector<int> patch(nt, -1);
-  std::vector<char> flip(nt, 0);
   std::vector<std::vector<int>> members;
   std::deque<int> queue;
   for (int seed = 0; seed < nt; ++seed) {
@@ -27,26 +29,24 @@ OrientReport orient_triangles(Mesh& mesh) {
       queue.pop_front();
       members[p].push_back(t);
       for (int s = 0; s < 3; ++s) {
-        const int e = me.tri_edge[t][s];
-        if (e < 0 || me.use_count(e) != 2) continue;
-        const detail::EdgeUse u0 = me.uses[me.first_use[e]], u1 = me.uses[me.first_use[e] + 1];
-        const detail::EdgeUse& mine = u0.tri == t ? u0 : u1;
-        const detail::EdgeUse& other = u0.tri == t ? u1 : u0;
-        if (other.tri == t) continue;
+        const int mine = 3 * t + s, other = me.twin[size_t(mine)];
+        if (other < 0) continue;  // not an edge of exactly two sides
+        const int other_tri = other / 3;
+        if (other_tri == t) continue;
         // Consistent winding: the two triangles walk the shared edge in opposite directions.
-        const bool mine_forward = mine.forward != bool(flip[t]);
-        const char needed = char(other.forward == mine_forward);
-        if (patch[other.tri] < 0) {
-          patch[other.tri] = p;
-          flip[other.tri] = needed;
-          queue.push_back(other.tri);
-        } else if (flip[other.tri] != needed) {
-          report.orientable = false;
+        const bool mine_forward = me.forward(mesh, mine) != bool(flip[t]);
+        const char needed = char(me.forward(mesh, other) == mine_forward);
+        if (patch[other_tri] < 0) {
+          patch[other_tri] = p;
+          flip[other_tri] = needed;
+          queue.push_back(other_tri);
+        } else if (flip[other_tri] != needed) {
+          out.orientable = false;
         }
       }
     }
   }
-  report.patches = int(members.size());
+  out.patches = int(members.size());
 
   for (const auto& tris : members) {
     bool closed = true;
@@ -54,13 +54,14 @@ OrientReport orient_triangles(Mesh& mesh) {
     for (int t : tris) {
       flips += flip[t];
       for (int s = 0; s < 3; ++s) {
-        const int e = me.tri_edge[t][s];
-        if (e >= 0 && me.use_count(e) != 2) closed = false;
+        const int other = me.twin[size_t(3 * t + s)];
+        if (other == MeshEdges::kBoundary || other == MeshEdges::kNonManifold)
+          closed = false;
       }
     }
     bool toggle;
     if (closed) {
-      ++report.closed_patches;
+      ++out.closed_patches;
       // Signed volume relative to a vertex of the patch: positive means outward.
       const Eigen::Vector3d o = mesh.vertices[mesh.triangles[tris.front()][0]];
       double six_volume = 0.0;
@@ -75,14 +76,26 @@ OrientReport orient_triangles(Mesh& mesh) {
     } else {
       toggle = 2 * flips > int(tris.size());  // keep most triangles as authored
     }
-    for (int t : tris) {
-      if (toggle) flip[t] = !flip[t];
-      if (flip[t]) {
-        std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
-        ++report.flipped;
-      }
-    }
+    if (toggle)
+      for (int t : tris) flip[t] = !flip[t];
   }
+  return out;
+}
+
+}  // namespace detail
+
+OrientReport orient_triangles(Mesh& mesh) {
+  const detail::OrientationFlips flips =
+      detail::orientation_flips(mesh, detail::build_mesh_edges(mesh));
+  OrientReport report;
+  report.patches = flips.patches;
+  report.closed_patches = flips.closed_patches;
+  report.orientable = flips.orientable;
+  for (size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (flips.flip[t]) {
+      std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
+      ++report.flipped;
+    }
   return report;
 }
 
