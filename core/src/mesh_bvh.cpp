@@ -4,6 +4,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "huge_pages.h"
+
 namespace cordgrasp {
 namespace {
 
@@ -97,6 +99,7 @@ void build_bvh_nodes(const std::vector<Eigen::Vector3d>& vertices,
   const int n = int(triangles.size());
   if (n == 0) return;
   Builder b{vertices, triangles, max_leaf_triangles, split, {}, bvh};
+  detail::reserve_huge(b.items, size_t(n));
   b.items.resize(size_t(n));
   for (int k = 0; k < n; ++k) {
     const Eigen::Vector3i& t = triangles[size_t(k)];
@@ -108,8 +111,10 @@ void build_bvh_nodes(const std::vector<Eigen::Vector3d>& vertices,
   // Median splits leave at least ⌈max_leaf / 2⌉ triangles in a leaf (fewer only for a mesh
   // that small): at most 2·leaves − 1 nodes, reserved at once (no regrowth copy).
   const int min_leaf = std::max(1, (max_leaf_triangles + 1) / 2);
-  bvh.nodes.reserve(size_t(2 * (n / min_leaf + 1)));
+  detail::reserve_huge(bvh.nodes, size_t(2 * (n / min_leaf + 1)));
   b.build(0, n);
+  detail::reserve_huge(bvh.triangle_ids, size_t(n));
+  detail::reserve_huge(bvh.triangles, size_t(n));
   bvh.triangle_ids.resize(size_t(n));
   bvh.triangles.resize(size_t(n));
   for (int k = 0; k < n; ++k) {
@@ -131,9 +136,9 @@ MeshBvh build_mesh_bvh(const Mesh& mesh, int max_leaf_triangles, MeshBvhSplit sp
 
 MeshBvh build_object_bvh(const Mesh& mesh) {
   std::vector<Eigen::Vector3i> usable;  // triangles of non-zero area
-  usable.reserve(mesh.triangles.size());
+  detail::reserve_huge(usable, mesh.triangles.size());
   std::vector<int> ids;  // usable triangle -> mesh triangle
-  ids.reserve(mesh.triangles.size());
+  detail::reserve_huge(ids, mesh.triangles.size());
   for (size_t k = 0; k < mesh.triangles.size(); ++k) {
     const Eigen::Vector3i& t = mesh.triangles[k];
     const Eigen::Vector3d& a = mesh.vertices[static_cast<size_t>(t[0])];
@@ -147,7 +152,8 @@ MeshBvh build_object_bvh(const Mesh& mesh) {
                        ? kLargeMeshLeafTriangles
                        : 4;
   MeshBvh bvh;
-  bvh.vertices = mesh.vertices;
+  detail::reserve_huge(bvh.vertices, mesh.vertices.size());
+  bvh.vertices.assign(mesh.vertices.begin(), mesh.vertices.end());
   build_bvh_nodes(mesh.vertices, usable, leaf, MeshBvhSplit::kCornerSum, bvh);
   for (int& id : bvh.triangle_ids) id = ids[static_cast<size_t>(id)];
   return bvh;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "huge_pages.h"
 #include "weld_table.h"
 
 namespace cordgrasp::detail {
@@ -13,7 +14,7 @@ MeshEdges build_mesh_edges(const Mesh& mesh) {
   const int nt = int(mesh.triangles.size());
 
   // Weld: referenced vertices with equal coordinates share an id (ids in vertex order).
-  out.weld.assign(size_t(nv), -1);
+  assign_huge(out.weld, size_t(nv), -1);
   {
     std::vector<char> used(size_t(nv), 0);
     for (const auto& t : mesh.triangles)
@@ -41,7 +42,9 @@ MeshEdges build_mesh_edges(const Mesh& mesh) {
     if (lo != hi) ++bucket[size_t(lo) + 1];
   }
   std::partial_sum(bucket.begin(), bucket.end(), bucket.begin());
-  std::vector<int> sides(size_t(bucket.back()));
+  std::vector<int> sides;
+  reserve_huge(sides, size_t(bucket.back()));
+  sides.resize(size_t(bucket.back()));
   {
     std::vector<int> fill(bucket.begin(), bucket.end() - 1);
     for (int code = 0; code < 3 * nt; ++code) {
@@ -51,7 +54,7 @@ MeshEdges build_mesh_edges(const Mesh& mesh) {
   }
   const auto hi_of = [&](int code) { return end_ids(code).second; };
   const auto by_hi = [&](int x, int y) { return hi_of(x) < hi_of(y); };
-  out.twin.assign(size_t(3) * size_t(nt), MeshEdges::kCollapsed);
+  assign_huge(out.twin, size_t(3) * size_t(nt), int(MeshEdges::kCollapsed));
   for (int lo = 0; lo < out.welded_vertices; ++lo) {
     int* first = sides.data() + bucket[size_t(lo)];
     int* last = sides.data() + bucket[size_t(lo) + 1];

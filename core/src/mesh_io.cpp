@@ -28,6 +28,7 @@
 #include "mesh_text.h"
 #include "obj_check.h"
 #include "off_check.h"
+#include "huge_pages.h"
 #include "ply_check.h"
 #include "weld_table.h"
 
@@ -257,6 +258,17 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
     fail(path, std::string("cannot parse: ") + importer.GetErrorString());
 
   SoupBuilder builder;
+  {
+    // Room for every face and vertex as read: a large mesh's arrays grow without regrowth
+    // copies (storage reserved but never written takes no memory).
+    size_t faces = 0, vertices = 0;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+      faces += scene->mMeshes[m]->mNumFaces;
+      vertices += scene->mMeshes[m]->mNumVertices;
+    }
+    detail::reserve_huge(builder.mesh.triangles, faces);
+    detail::reserve_huge(builder.mesh.vertices, vertices);
+  }
   builder.add_node(*scene, *scene->mRootNode, aiMatrix4x4());
   Mesh& mesh = builder.mesh;
   if (builder.non_finite_triangles > 0)
@@ -286,7 +298,7 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   // precision of the file's float coordinates relative to the mesh size.
   const double min_altitude = kDegenerateAltitudeRel * mesh_bounds(mesh).size().norm();
   std::vector<Eigen::Vector3i> kept;
-  kept.reserve(mesh.triangles.size());
+  detail::reserve_huge(kept, mesh.triangles.size());
   for (const auto& t : mesh.triangles) {
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
     const Eigen::Vector3d& a = mesh.vertices[t[0]];
@@ -304,9 +316,10 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   mesh.triangles = std::move(kept);
 
   // Compact: keep only referenced vertices, in first-use order.
-  std::vector<int> remap(mesh.vertices.size(), -1);
+  std::vector<int> remap;
+  detail::assign_huge(remap, mesh.vertices.size(), -1);
   std::vector<Eigen::Vector3d> used;
-  used.reserve(mesh.vertices.size());
+  detail::reserve_huge(used, mesh.vertices.size());
   for (auto& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) {
       int& r = remap[t[k]];

@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include "huge_pages.h"
 #include "mesh_edges.h"
 
 namespace cordgrasp {
@@ -14,8 +15,9 @@ OrientationFlips orientation_flips(const Mesh& mesh, const MeshEdges& me) {
   const int nt = int(mesh.triangles.size());
   OrientationFlips out;
   std::vector<char>& flip = out.flip;
-  flip.assign(size_t(nt), 0);
-  std::vector<int> patch(nt, -1);
+  assign_huge(flip, size_t(nt), char(0));
+  std::vector<int> patch;
+  assign_huge(patch, size_t(nt), -1);
   std::vector<std::vector<int>> members;
   std::deque<int> queue;
   for (int seed = 0; seed < nt; ++seed) {

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <vector>
 
+#include "huge_pages.h"
+
 namespace cordgrasp::detail {
 
 /// Set of point ids keyed by their exact coordinates (−0.0 equals +0.0, as `==` says). The table
@@ -16,7 +18,7 @@ class WeldTable {
   explicit WeldTable(std::size_t expected = 0) {
     std::size_t size = 16;
     while (size < 2 * expected) size *= 2;
-    slots_.assign(size, kEmpty);
+    assign_huge(slots_, size, kEmpty);
   }
 
   /// The id of a stored point equal to p, or −1 after storing `new_id` for p.
@@ -52,7 +54,8 @@ class WeldTable {
   }
   template <typename PointOf>
   void grow(PointOf&& point_of) {
-    std::vector<int> old(slots_.size() * 2, kEmpty);
+    std::vector<int> old;
+    assign_huge(old, slots_.size() * 2, kEmpty);
     old.swap(slots_);
     const std::size_t mask = slots_.size() - 1;
     for (int id : old) {
