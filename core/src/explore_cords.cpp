@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <map>
 #include <mutex>
@@ -12,6 +13,7 @@
 #include "cord_random.h"
 #include "cordgrasp/core/cord_object.h"
 #include "cordgrasp/core/guide_frame.h"
+#include "cordgrasp/core/parallel_for.h"
 #include "cordgrasp/core/scan_cord_set.h"
 #include "cordgrasp/core/sphere_points.h"
 
@@ -38,7 +40,7 @@ double seconds_since(Clock::time_point t0) {
 
 std::vector<GraspRegion> explore_cords(const Mesh& mesh, double palm_width_m,
                                        const CordParams& params, ExplorationStats* stats_out,
-                                       std::shared_ptr<const MeshBvh> object_bvh) {
+                                       std::shared_ptr<const MeshBvh> object_bvh, int threads) {
   const Clock::time_point start = Clock::now();
   if (!(palm_width_m > 0.0)) throw std::invalid_argument("explore_cords: palm width must be > 0 m");
   const CordObject object = make_cord_object(mesh, std::move(object_bvh));
@@ -104,29 +106,47 @@ std::vector<GraspRegion> explore_cords(const Mesh& mesh, double palm_width_m,
   // Local improvement (docs/algorithm.md §5): L rigid perturbations of each set's T0.
   const Clock::time_point improvement_start = Clock::now();
   if (params.local_improvement && !st.hit_time_limit) {
+    // The perturbations are drawn first, in the serial order, and scanned independently (on
+    // `threads` threads); the valid ones are appended in draw order.
+    struct Perturbed {
+      Eigen::Vector3d p[3];
+      bool tried = false;
+      std::optional<GraspRegion> region;
+    };
     const size_t base = found.size();
-    for (size_t s = 0; s < base && !st.hit_time_limit; ++s) {
+    std::vector<Perturbed> drawn;
+    drawn.reserve(base * size_t(std::max(0, params.perturbations_per_set)));
+    for (size_t s = 0; s < base; ++s) {
       const Eigen::Vector3d t0[3] = {found[s].p1, found[s].p2, found[s].p3};
       const Eigen::Vector3d g = (t0[0] + t0[1] + t0[2]) / 3.0;
       for (int l = 0; l < params.perturbations_per_set; ++l) {
-        if (out_of_time()) break;
         const Eigen::Vector3d axis = detail::uniform_unit_vector(rng);
         const double angle = detail::uniform01(rng) * params.perturb_max_angle_rad;
         const Eigen::Vector3d shift =
             detail::uniform_in_ball(rng, params.perturb_max_translation_m);
         const Eigen::AngleAxisd rot(angle, axis);
-        Eigen::Vector3d p[3];
-        for (int k = 0; k < 3; ++k) p[k] = g + rot * (t0[k] - g) + shift;
-        ++st.improvement_tried;
-        if (!is_acute_triangle(p[0], p[1], p[2], params.min_triangle_area_m2)) continue;
-        std::optional<GraspRegion> region =
-            scan_cord_set(object, p[0], p[1], p[2], palm_width_m, params);
-        if (region) {
-          region->from_local_improvement = true;
-          ++st.improvement_valid;
-          found.push_back(std::move(*region));
-        }
+        Perturbed& d = drawn.emplace_back();
+        for (int k = 0; k < 3; ++k) d.p[k] = g + rot * (t0[k] - g) + shift;
       }
+    }
+    std::atomic<bool> late{false};
+    parallel_for(int(drawn.size()), threads, [&](int i) {
+      if (late || (timed && Clock::now() >= deadline)) {
+        late = true;  // the rest is skipped (the result is marked not reproducible)
+        return;
+      }
+      Perturbed& d = drawn[size_t(i)];
+      d.tried = true;
+      if (!is_acute_triangle(d.p[0], d.p[1], d.p[2], params.min_triangle_area_m2)) return;
+      d.region = scan_cord_set(object, d.p[0], d.p[1], d.p[2], palm_width_m, params);
+    });
+    if (late) st.hit_time_limit = true;
+    for (Perturbed& d : drawn) {
+      st.improvement_tried += d.tried ? 1 : 0;
+      if (!d.region) continue;
+      d.region->from_local_improvement = true;
+      ++st.improvement_valid;
+      found.push_back(std::move(*d.region));
     }
   }
   st.improvement_time_s = seconds_since(improvement_start);

@@ -115,14 +115,16 @@ std::vector<int> cord_region_order(const std::vector<GraspRegion>& regions, doub
 
 PlanResult plan_cord_grasps(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
                             const CordParams& cord, const PlanParams& params,
-                            ExplorationStats* exploration, const CancelToken& cancel) {
+                            ExplorationStats* exploration, const CancelToken& cancel,
+                            int threads) {
   const auto start = std::chrono::steady_clock::now();
   CordParams explore = cord;
   if (explore.time_limit_s <= 0.0 || explore.time_limit_s > params.time_limit_s)
     explore.time_limit_s = params.time_limit_s;
   const double w_palm = palm_width(hand);
   ExplorationStats explored;
-  const std::vector<GraspRegion> regions = explore_cords(mesh, w_palm, explore, &explored, collider.object_bvh());
+  const std::vector<GraspRegion> regions =
+      explore_cords(mesh, w_palm, explore, &explored, collider.object_bvh(), threads);
   if (exploration) *exploration = explored;
   const std::vector<int> order = cord_region_order(regions, w_palm, explore);
   PlanResult result = plan_cord_grasps_from_regions(mesh, hand, collider, regions, params,

@@ -61,9 +61,9 @@ class CandidateSource {
  public:
   CandidateSource(const Mesh& mesh, const HandModel& hand, PlannerKind planner,
                   const PlanParams& plan, const std::optional<CordParams>& cord,
-                  const CancelToken& cancel)
+                  const CancelToken& cancel, int threads)
       : mesh_(mesh), hand_(hand), planner_(planner), plan_(plan), cord_(cord), cancel_(cancel),
-        collider_(make_bullet_hand_collider(hand, mesh)) {}
+        threads_(threads), collider_(make_bullet_hand_collider(hand, mesh)) {}
 
   /// The next candidate, or nullopt when the planner has none left within `time_left_s`.
   std::optional<Grasp> next(double time_left_s, PlanStats& stats) {
@@ -107,7 +107,7 @@ class CandidateSource {
     if (explore.time_limit_s <= 0.0 || explore.time_limit_s > time_left_s)
       explore.time_limit_s = time_left_s;
     const double w_palm = palm_width(hand_);
-    regions_ = explore_cords(mesh_, w_palm, explore);
+    regions_ = explore_cords(mesh_, w_palm, explore, nullptr, collider_->object_bvh(), threads_);
     order_ = cord_region_order(regions_, w_palm, explore);
     exploration_s_ = seconds_since(start);
     offset_ = 0;
@@ -122,6 +122,7 @@ class CandidateSource {
   const PlanParams& plan_;
   const std::optional<CordParams>& cord_;
   CancelToken cancel_;
+  int threads_;  ///< the exploration's local improvement
   std::unique_ptr<HandObjectCollider> collider_;
   static constexpr int kMaxExplorations = 4;  ///< the first and three with later seeds
   int explorations_ = 0;
@@ -170,7 +171,7 @@ ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, Pla
 
   const int wanted = std::max(1, plan.grasps);
   const double radius_m = bounding_radius(mesh, vertex_mean(mesh));
-  CandidateSource source(mesh, hand, planner, plan, cord, cancel);
+  CandidateSource source(mesh, hand, planner, plan, cord, cancel, jobs);
   PlanStats& stats = out.stats;
   std::vector<Grasp>& accepted_grasps = out.grasps;
   int candidate = -1;

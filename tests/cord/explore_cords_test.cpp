@@ -67,6 +67,21 @@ TEST(ExploreCords, SameSeedGivesIdenticalRegions) {
   EXPECT_EQ(sa.improvement_valid, sb.improvement_valid);
 }
 
+TEST(ExploreCords, ThreadsDoNotChangeTheRegionsOrTheCounters) {
+  const Mesh mesh = bottle();
+  ExplorationStats s1, s3;
+  const auto a = explore_cords(mesh, kPalmWidth_m, untimed(7), &s1, nullptr, 1);
+  const auto b = explore_cords(mesh, kPalmWidth_m, untimed(7), &s3, nullptr, 3);
+  ASSERT_GT(s1.improvement_valid, 0);  // the threaded part ran
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t k = 0; k < a.size(); ++k) expect_identical(a[k], b[k]);
+  EXPECT_EQ(s1.triangles_sampled, s3.triangles_sampled);
+  EXPECT_EQ(s1.sets_valid, s3.sets_valid);
+  EXPECT_EQ(s1.improvement_tried, s3.improvement_tried);
+  EXPECT_EQ(s1.improvement_valid, s3.improvement_valid);
+  EXPECT_FALSE(s3.hit_time_limit);
+}
+
 TEST(ExploreCords, DifferentSeedsSampleDifferently) {
   const Mesh mesh = bottle();
   const auto a = explore_cords(mesh, kPalmWidth_m, untimed(1));

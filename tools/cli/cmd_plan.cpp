@@ -93,7 +93,7 @@ void run_plan(const PlanOptions& opt) {
                              },
                              cancel);
   } else {
-    doc = plan_job(opt.job, mesh, object_path, hand, cancel);
+    doc = plan_job(opt.job, mesh, object_path, hand, cancel, opt.jobs);
   }
   write_plan_file(opt.out, doc, hand);
   if (!opt.quiet) print_summary(doc, hand, opt.out);
@@ -126,7 +126,8 @@ void add_plan_command(CLI::App& app) {
   cmd->add_option("--physics", opt->validation.physics_file,
                   std::string("--validate: ") + kPhysicsHelp);
   cmd->add_option("--jobs,-j", opt->jobs,
-                  "--validate: trials simulated at once, one physics world per thread")
+                  "Threads: the cord exploration's local improvement, and with --validate the "
+                  "trials simulated at once (one physics world each); results do not depend on it")
       ->check(whole_number_in(1, 256))
       ->capture_default_str();
   cmd->add_option("--out", opt->out, "Output plan.json")->required();

@@ -97,12 +97,13 @@ PlanDocument plan_document_for(const PlanJobParams& p, const Mesh& mesh,
 }
 
 PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::string& object_path,
-                      const HandModel& hand, const CancelToken& cancel) {
+                      const HandModel& hand, const CancelToken& cancel, int threads) {
   PlanDocument doc = plan_document_for(p, mesh, object_path, hand);
   auto collider = make_bullet_hand_collider(hand, mesh);
   PlanResult result;
   if (p.planner == PlannerKind::kCord)
-    result = plan_cord_grasps(mesh, hand, *collider, *doc.cord, doc.params, nullptr, cancel);
+    result = plan_cord_grasps(mesh, hand, *collider, *doc.cord, doc.params, nullptr, cancel,
+                              threads);
   else
     result = plan_generic_grasps(mesh, hand, *collider, doc.params, cancel);
   if (result.stats.interrupted) doc.interrupted = cancel.reason();

@@ -95,7 +95,8 @@ void plan_stage(const RunParams& opt, const RunInputs& in, const RunProgress& pr
   const auto t = Clock::now();
   report->plan = validated ? validated_plan_job(opt.job, validation, *in.mesh, in.object_path,
                                                 in.hand, opt.jobs, progress, opt.cancel)
-                           : plan_job(opt.job, *in.mesh, in.object_path, in.hand, opt.cancel);
+                           : plan_job(opt.job, *in.mesh, in.object_path, in.hand, opt.cancel,
+                                      opt.jobs);
   report->plan_wall_s = seconds_since(t);
   write_plan_file(in.plan_path, report->plan, in.hand);
 }

@@ -295,16 +295,17 @@ void bind_plan(py::module_& m) {
 
   m.def(
       "plan",
-      [](const PyMesh& mesh, const PyHand& hand, const py::kwargs& kwargs) {
+      [](const PyMesh& mesh, const PyHand& hand, int jobs, const py::kwargs& kwargs) {
         PlanJobParams params;
         set_from_kwargs(&params, kwargs);
         return run_plan(mesh, hand, [&](const std::string& path) {
-          return plan_job(params, *mesh.mesh, path, *hand.hand);
+          return plan_job(params, *mesh.mesh, path, *hand.hand, {}, jobs);
         });
       },
-      py::arg("mesh"), py::arg("hand"),
-      "Plans force-closure grasps. Keyword arguments: planner ('cord' or 'generic') and every "
-      "field of plan_parameters() (flat names, C++ defaults).");
+      py::arg("mesh"), py::arg("hand"), py::arg("jobs") = 1,
+      "Plans force-closure grasps. `jobs`: threads of the cord exploration (same result). "
+      "Keyword arguments: planner ('cord' or 'generic') and every field of plan_parameters() "
+      "(flat names, C++ defaults).");
 
   m.def("validation_parameters", &defaults_dict<ValidationParams>,
         "Every key of plan_validated()'s `validation` dict with its C++ default.");

@@ -28,6 +28,12 @@ def test_plan_matches_cli_with_same_seed(mug, hand, cli, tmp_path):
     assert strip_timings(plan.to_dict()) == strip_timings(from_cli)
 
 
+def test_jobs_do_not_change_the_plan(mug, hand):
+    one = cordgrasp.plan(mug, hand, seed=3, grasps=2, jobs=1)
+    two = cordgrasp.plan(mug, hand, seed=3, grasps=2, jobs=2)
+    assert strip_timings(one.to_dict()) == strip_timings(two.to_dict())
+
+
 def test_grasps_are_numpy_objects(mug, hand):
     plan = cordgrasp.plan(mug, hand, seed=3)
     g = plan.grasps[0]

@@ -46,10 +46,10 @@ std::vector<int> cord_region_order(const std::vector<GraspRegion>& regions, doub
 /// plan_cord_grasps_from_regions() in cord_region_order(). The exploration shares
 /// params.time_limit_s (its own cap is min(cord.time_limit_s, params.time_limit_s)).
 /// `exploration`, when given, receives its stats; `cancel` stops the finger stage early (the
-/// exploration runs to its end).
+/// exploration runs to its end). `threads`: explore_cords()'s (the result does not depend on it).
 PlanResult plan_cord_grasps(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
                             const CordParams& cord, const PlanParams& params,
                             ExplorationStats* exploration = nullptr,
-                            const CancelToken& cancel = {});
+                            const CancelToken& cancel = {}, int threads = 1);
 
 }  // namespace cordgrasp

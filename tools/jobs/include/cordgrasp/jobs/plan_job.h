@@ -58,9 +58,10 @@ PlanDocument plan_document_for(const PlanJobParams& p, const Mesh& mesh,
 /// Plans grasps on `mesh` (loaded from `object_path`) with `hand`: the document plan.json
 /// holds. Deterministic for a given seed (timings aside). `cancel` stops the finger stage
 /// before its next attempt: the document then holds the grasps found so far and
-/// doc.interrupted names the signal.
+/// doc.interrupted names the signal. `threads`: the cord exploration's (plan_cord_grasps);
+/// the document does not depend on it.
 PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::string& object_path,
-                      const HandModel& hand, const CancelToken& cancel = {});
+                      const HandModel& hand, const CancelToken& cancel = {}, int threads = 1);
 
 /// One line on a plan that found no force-closure grasp: "<who>: no force-closure grasp of
 /// <object> with <hand> (<planner> planner, N attempts in T s, <why it stopped>); try ...",
