@@ -3,6 +3,8 @@
 #include <LinearMath/btConvexHullComputer.h>
 
 #include <Eigen/Eigenvalues>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 
 #include "bullet_shapes.h"
@@ -21,6 +23,34 @@ namespace {
 constexpr double kMinInertiaRatio = 1e-3;
 /// More parts than this get a dynamic AABB tree in the compound.
 constexpr int kCompoundTreeParts = 8;
+
+/// Returns compute()'s value for `key`, computing it once per key and process (concurrent
+/// callers of one key wait for the first). A validate of N grasps or trials builds N bodies of
+/// one object: what depends on the mesh alone (hulls of millions of vertices) is derived once.
+template <typename T, typename F>
+const T& once_per_key(const std::string& key, F&& compute) {
+  struct Entry {
+    std::once_flag once;
+    T value;
+  };
+  static std::mutex mutex;
+  static std::map<std::string, std::unique_ptr<Entry>> entries;
+  Entry* entry = nullptr;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    std::unique_ptr<Entry>& slot = entries[key];
+    if (!slot) slot = std::make_unique<Entry>();
+    entry = slot.get();
+  }
+  std::call_once(entry->once, [&]() { entry->value = compute(); });
+  return entry->value;
+}
+
+/// The mass bases make_object_body chooses between.
+struct MeshVolumes {
+  SolidVolume hull;
+  std::optional<SolidVolume> closed;
+};
 
 Eigen::Matrix3d shift_inertia(double mass, const Eigen::Vector3d& d) {
   return mass * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
@@ -106,8 +136,12 @@ std::unique_ptr<ObjectBody> make_object_body(const Mesh& mesh, const SimParams& 
 
   // Mass basis (docs/physics.md §2): the closed volume; for an open mesh a shell of
   // open_mesh_shell_m over its surface, at most the convex hull's volume.
-  const SolidVolume hull_volume = convex_hull_volume(mesh);
-  const std::optional<SolidVolume> closed = closed_mesh_volume(mesh);
+  const std::string mesh_key = mesh_hash(mesh);
+  const MeshVolumes& volumes = once_per_key<MeshVolumes>(mesh_key, [&]() {
+    return MeshVolumes{convex_hull_volume(mesh), closed_mesh_volume(mesh)};
+  });
+  const SolidVolume& hull_volume = volumes.hull;
+  const std::optional<SolidVolume>& closed = volumes.closed;
   info.closed = closed.has_value();
   SolidVolume basis = closed ? *closed : hull_volume;
   if (!closed && params.open_mesh_shell_m > 0.0) {
@@ -145,8 +179,12 @@ std::unique_ptr<ObjectBody> make_object_body(const Mesh& mesh, const SimParams& 
     info.decomposition_s = d->compute_s;
     parts = d->parts;
   }
-  if (shape == ObjectShape::kConvexHull && parts.empty())
-    parts.push_back(simplified_convex_hull(mesh.vertices, params.decomposition.max_hull_vertices));
+  if (shape == ObjectShape::kConvexHull && parts.empty()) {
+    const int max_vertices = params.decomposition.max_hull_vertices;
+    parts.push_back(once_per_key<std::vector<Eigen::Vector3d>>(
+        mesh_key + "-hull-" + std::to_string(max_vertices),
+        [&]() { return simplified_convex_hull(mesh.vertices, max_vertices); }));
+  }
   info.shape = shape;
 
   // Inertia of the collision shape (unit density), scaled to the mass about the mass's COM.
