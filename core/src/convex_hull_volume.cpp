@@ -4,6 +4,7 @@
 #include <libqhullcpp/QhullError.h>
 #include <libqhullcpp/QhullFacet.h>
 #include <libqhullcpp/QhullFacetList.h>
+#include <libqhullcpp/QhullVertex.h>
 #include <libqhullcpp/QhullVertexSet.h>
 
 #include <cmath>
@@ -18,7 +19,8 @@ namespace cordgrasp {
 // libqhullcpp is linked, its qh_fprintf replaces libqhull_r's and aborts the process when a
 // plain C qhT reports an error (QH10025), e.g. for flat input.
 
-SolidVolume convex_hull_volume(const Mesh& mesh) {
+SolidVolume convex_hull_volume(const Mesh& mesh, std::vector<Eigen::Vector3d>* hull_vertices) {
+  if (hull_vertices) hull_vertices->clear();
   std::vector<char> used(mesh.vertices.size(), 0);
   for (const auto& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) used[t[k]] = 1;
@@ -67,6 +69,11 @@ SolidVolume convex_hull_volume(const Mesh& mesh) {
     out.volume_m3 = volume;
     out.center_of_mass_m = moment / volume;
   }
+  if (hull_vertices)
+    for (const orgQhull::QhullVertex& v : qhull.vertexList()) {
+      const realT* c = v.point().coordinates();
+      hull_vertices->emplace_back(c[0], c[1], c[2]);
+    }
   return out;
 }
 

@@ -231,6 +231,11 @@ std::vector<Eigen::Vector3d> simplified_convex_hull(const std::vector<Eigen::Vec
   std::vector<Eigen::Vector3d> hull;
   for (int i = 0; i < exact.vertices.size(); ++i)
     hull.emplace_back(exact.vertices[i].x(), exact.vertices[i].y(), exact.vertices[i].z());
+  return reduced_convex_hull(hull, max_vertices);
+}
+
+std::vector<Eigen::Vector3d> reduced_convex_hull(const std::vector<Eigen::Vector3d>& hull,
+                                                 int max_vertices) {
   if (static_cast<int>(hull.size()) <= std::max(4, max_vertices) || hull.size() < 4) return hull;
   std::vector<HACD::Vec3<HACD::Real>> in;
   in.reserve(hull.size());

@@ -46,10 +46,16 @@ const T& once_per_key(const std::string& key, F&& compute) {
   return entry->value;
 }
 
-/// The mass bases make_object_body chooses between.
+/// Above this many triangles (raw scans) the convex-hull shape is reduced from the vertices of
+/// the hull that the mass basis computes (Qhull) instead of from a second exact hull of every
+/// vertex; below it (every shipped and dataset mesh) the shape is as it always was.
+constexpr size_t kLargeMeshTriangles = 200000;
+
+/// The mass bases make_object_body chooses between, and (large meshes) the hull's vertices.
 struct MeshVolumes {
   SolidVolume hull;
   std::optional<SolidVolume> closed;
+  std::vector<Eigen::Vector3d> hull_vertices;
 };
 
 Eigen::Matrix3d shift_inertia(double mass, const Eigen::Vector3d& d) {
@@ -137,8 +143,12 @@ std::unique_ptr<ObjectBody> make_object_body(const Mesh& mesh, const SimParams& 
   // Mass basis (docs/physics.md §2): the closed volume; for an open mesh a shell of
   // open_mesh_shell_m over its surface, at most the convex hull's volume.
   const std::string mesh_key = mesh_hash(mesh);
+  const bool large = mesh.triangles.size() > kLargeMeshTriangles;
   const MeshVolumes& volumes = once_per_key<MeshVolumes>(mesh_key, [&]() {
-    return MeshVolumes{convex_hull_volume(mesh), closed_mesh_volume(mesh)};
+    MeshVolumes v;
+    v.hull = convex_hull_volume(mesh, large ? &v.hull_vertices : nullptr);
+    v.closed = closed_mesh_volume(mesh);
+    return v;
   });
   const SolidVolume& hull_volume = volumes.hull;
   const std::optional<SolidVolume>& closed = volumes.closed;
@@ -183,7 +193,11 @@ std::unique_ptr<ObjectBody> make_object_body(const Mesh& mesh, const SimParams& 
     const int max_vertices = params.decomposition.max_hull_vertices;
     parts.push_back(once_per_key<std::vector<Eigen::Vector3d>>(
         mesh_key + "-hull-" + std::to_string(max_vertices),
-        [&]() { return simplified_convex_hull(mesh.vertices, max_vertices); }));
+        [&]() {
+          return large && volumes.hull_vertices.size() >= 4
+                     ? reduced_convex_hull(volumes.hull_vertices, max_vertices)
+                     : simplified_convex_hull(mesh.vertices, max_vertices);
+        }));
   }
   info.shape = shape;
 

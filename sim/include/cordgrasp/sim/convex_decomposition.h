@@ -63,6 +63,11 @@ std::shared_ptr<const ConvexDecomposition> cached_convex_decomposition(
 std::vector<Eigen::Vector3d> simplified_convex_hull(const std::vector<Eigen::Vector3d>& points,
                                                     int max_vertices);
 
+/// simplified_convex_hull() for points that are already the vertices of their convex hull
+/// (e.g. Qhull's): the reduction alone.
+std::vector<Eigen::Vector3d> reduced_convex_hull(const std::vector<Eigen::Vector3d>& hull_vertices,
+                                                 int max_vertices);
+
 /// 64-bit FNV-1a hash of the mesh geometry (vertex coordinates and triangle indices), as 16 hex
 /// digits.
 std::string mesh_hash(const Mesh& mesh);

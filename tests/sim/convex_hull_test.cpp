@@ -1,0 +1,59 @@
+// Hull vertices from Qhull and their reduction: the path the object body takes for raw scans.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "cordgrasp/core/convex_hull_volume.h"
+#include "cordgrasp/core/shapes.h"
+#include "cordgrasp/sim/convex_decomposition.h"
+
+namespace cordgrasp {
+namespace {
+
+constexpr int kMaxHullVertices = 64;
+
+bool contains(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& p) {
+  return std::find(points.begin(), points.end(), p) != points.end();
+}
+
+TEST(ConvexHullVertices, AreTheCornersOfABoxAndEveryPointOfASphere) {
+  std::vector<Eigen::Vector3d> box_hull, sphere_hull;
+  const Mesh box = make_box_mesh(Eigen::Vector3d(0.02, 0.04, 0.06));
+  convex_hull_volume(box, &box_hull);
+  EXPECT_EQ(box_hull.size(), 8u);
+  for (const Eigen::Vector3d& p : box_hull) EXPECT_TRUE(contains(box.vertices, p));
+  const Mesh sphere = make_sphere_mesh(0.03, 12, 24);
+  const SolidVolume v = convex_hull_volume(sphere, &sphere_hull);
+  EXPECT_EQ(sphere_hull.size(), sphere.vertices.size());
+  EXPECT_GT(v.volume_m3, 0.0);
+}
+
+TEST(ReducedConvexHull, KeepsAtMostTheBoundFromTheHullVerticesAsTheFullPathDoes) {
+  const Mesh sphere = make_sphere_mesh(0.03, 24, 48);
+  std::vector<Eigen::Vector3d> hull;
+  convex_hull_volume(sphere, &hull);
+  const std::vector<Eigen::Vector3d> reduced = reduced_convex_hull(hull, kMaxHullVertices);
+  const std::vector<Eigen::Vector3d> full = simplified_convex_hull(sphere.vertices, kMaxHullVertices);
+  EXPECT_LE(int(reduced.size()), kMaxHullVertices);
+  EXPECT_EQ(reduced.size(), full.size());
+  for (const Eigen::Vector3d& p : reduced) EXPECT_TRUE(contains(hull, p));
+  // Both reductions lie inside the sphere and keep most of its volume.
+  Mesh a, b;
+  a.vertices = reduced;
+  b.vertices = full;
+  for (Mesh* m : {&a, &b})
+    for (int i = 0; i + 2 < int(m->vertices.size()); ++i) m->triangles.emplace_back(0, i + 1, i + 2);
+  const double exact = convex_hull_volume(sphere).volume_m3;
+  EXPECT_GT(convex_hull_volume(a).volume_m3, 0.9 * exact);
+  EXPECT_GT(convex_hull_volume(b).volume_m3, 0.9 * exact);
+  EXPECT_LE(convex_hull_volume(a).volume_m3, exact * (1 + 1e-12));
+}
+
+TEST(ReducedConvexHull, ReturnsFewPointsAsGiven) {
+  const std::vector<Eigen::Vector3d> few = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0),
+                                            Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1)};
+  EXPECT_EQ(reduced_convex_hull(few, kMaxHullVertices), few);
+}
+
+}  // namespace
+}  // namespace cordgrasp
