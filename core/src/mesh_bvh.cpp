@@ -65,8 +65,10 @@ struct Builder {
     }
     // Centroid bounds: for kCornerSum the centroid is sum·(1/3), and rounding a product is
     // monotone, so the bounds of the centroids are the key bounds times 1/3, exactly.
-    const Eigen::Vector3d clo = split == MeshBvhSplit::kCornerSum ? Eigen::Vector3d(klo * (1.0 / 3.0)) : klo;
-    const Eigen::Vector3d chi = split == MeshBvhSplit::kCornerSum ? Eigen::Vector3d(khi * (1.0 / 3.0)) : khi;
+    const Eigen::Vector3d clo =
+        split == MeshBvhSplit::kCornerSum ? Eigen::Vector3d(klo * (1.0 / 3.0)) : klo;
+    const Eigen::Vector3d chi =
+        split == MeshBvhSplit::kCornerSum ? Eigen::Vector3d(khi * (1.0 / 3.0)) : khi;
     int axis = 0;
     (chi - clo).maxCoeff(&axis);
     const int mid = begin + (end - begin) / 2;
@@ -148,9 +150,8 @@ MeshBvh build_object_bvh(const Mesh& mesh) {
     usable.push_back(t);
     ids.push_back(static_cast<int>(k));
   }
-  const int leaf = static_cast<int>(usable.size()) > kLargeMeshTriangles
-                       ? kLargeMeshLeafTriangles
-                       : 4;
+  const int leaf =
+      static_cast<int>(usable.size()) > kLargeMeshTriangles ? kLargeMeshLeafTriangles : 4;
   MeshBvh bvh;
   detail::reserve_huge(bvh.vertices, mesh.vertices.size());
   bvh.vertices.assign(mesh.vertices.begin(), mesh.vertices.end());

@@ -15,8 +15,8 @@ struct MeshEdges {
   static constexpr int kNonManifold = -2;  ///< the side's edge is used by three or more sides
   static constexpr int kCollapsed = -3;    ///< both ends weld to one vertex: not an edge
 
-  std::vector<int> weld;   ///< vertex index → welded id (vertex-index order), −1 if unused
-  int welded_vertices = 0; ///< distinct referenced positions
+  std::vector<int> weld;    ///< vertex index → welded id (vertex-index order), −1 if unused
+  int welded_vertices = 0;  ///< distinct referenced positions
   /// Per side code: the other side of its edge when exactly two sides use the edge, else one of
   /// kBoundary, kNonManifold, kCollapsed.
   std::vector<int> twin;
@@ -24,7 +24,8 @@ struct MeshEdges {
   int boundary_edges = 0;      ///< edges used by one side
   int non_manifold_edges = 0;  ///< edges used by three or more sides
 
-  /// Every edge is shared by exactly two triangle sides (mesh_topology's `closed`, given triangles).
+  /// Every edge is shared by exactly two triangle sides (mesh_topology's `closed`, given
+  /// triangles).
   bool every_edge_used_twice() const { return boundary_edges == 0 && non_manifold_edges == 0; }
   /// The side walks its edge from the lower to the higher welded id.
   bool forward(const Mesh& mesh, int side_code) const {

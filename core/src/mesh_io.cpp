@@ -25,10 +25,10 @@
 #include "cordgrasp/core/enum_names.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/mesh_properties.h"
+#include "huge_pages.h"
 #include "mesh_text.h"
 #include "obj_check.h"
 #include "off_check.h"
-#include "huge_pages.h"
 #include "ply_check.h"
 #include "weld_table.h"
 

@@ -57,8 +57,7 @@ OrientationFlips orientation_flips(const Mesh& mesh, const MeshEdges& me) {
       flips += flip[t];
       for (int s = 0; s < 3; ++s) {
         const int other = me.twin[size_t(3 * t + s)];
-        if (other == MeshEdges::kBoundary || other == MeshEdges::kNonManifold)
-          closed = false;
+        if (other == MeshEdges::kBoundary || other == MeshEdges::kNonManifold) closed = false;
       }
     }
     bool toggle;

@@ -33,7 +33,8 @@ TEST(ReducedConvexHull, KeepsAtMostTheBoundFromTheHullVerticesAsTheFullPathDoes)
   std::vector<Eigen::Vector3d> hull;
   convex_hull_volume(sphere, &hull);
   const std::vector<Eigen::Vector3d> reduced = reduced_convex_hull(hull, kMaxHullVertices);
-  const std::vector<Eigen::Vector3d> full = simplified_convex_hull(sphere.vertices, kMaxHullVertices);
+  const std::vector<Eigen::Vector3d> full =
+      simplified_convex_hull(sphere.vertices, kMaxHullVertices);
   EXPECT_LE(int(reduced.size()), kMaxHullVertices);
   EXPECT_EQ(reduced.size(), full.size());
   for (const Eigen::Vector3d& p : reduced) EXPECT_TRUE(contains(hull, p));
@@ -42,7 +43,8 @@ TEST(ReducedConvexHull, KeepsAtMostTheBoundFromTheHullVerticesAsTheFullPathDoes)
   a.vertices = reduced;
   b.vertices = full;
   for (Mesh* m : {&a, &b})
-    for (int i = 0; i + 2 < int(m->vertices.size()); ++i) m->triangles.emplace_back(0, i + 1, i + 2);
+    for (int i = 0; i + 2 < int(m->vertices.size()); ++i)
+      m->triangles.emplace_back(0, i + 1, i + 2);
   const double exact = convex_hull_volume(sphere).volume_m3;
   EXPECT_GT(convex_hull_volume(a).volume_m3, 0.9 * exact);
   EXPECT_GT(convex_hull_volume(b).volume_m3, 0.9 * exact);

@@ -1,8 +1,8 @@
 #pragma once
+#include <vector>
+
 #include "cordgrasp/core/mesh.h"
 #include "cordgrasp/core/mesh_volume.h"
-
-#include <vector>
 
 namespace cordgrasp {
 
