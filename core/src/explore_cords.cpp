@@ -75,29 +75,58 @@ std::vector<GraspRegion> explore_cords(const Mesh& mesh, double palm_width_m,
     return fallback ? (full >= wanted || found.size() >= 2 * wanted) : found.size() >= wanted;
   };
   const Clock::time_point sampling_start = Clock::now();
-  for (int it = 0; it < params.max_iterations && !enough() && count > 0; ++it) {
+  // Guide triangles are drawn in the serial order; up to `batch` acute ones at a time are scanned
+  // on `threads` threads, then taken in draw order until enough sets are found (scans past that
+  // point are dropped): the regions and counters are those of a one-at-a-time loop.
+  struct Sampled {
+    int j = 0;
+    Eigen::Vector3d p1, p2, p3;
+    bool acute = false;
+    ScanFailure why = ScanFailure::kNone;
+    std::optional<GraspRegion> region;
+  };
+  const int batch = threads > 1 ? 2 * threads : 1;
+  std::vector<Sampled> pending;
+  bool stop = false;
+  for (int it = 0; it < params.max_iterations && !enough() && count > 0 && !stop; ++it) {
     if (out_of_time()) break;
     ++st.iterations;
     detail::shuffle(perm1, rng);
     detail::shuffle(perm2, rng);
     detail::shuffle(perm3, rng);
-    for (int j = 0; j < count && !enough(); ++j) {
-      if ((j & 63) == 0 && out_of_time()) break;
-      ++st.triangles_sampled;
-      const Eigen::Vector3d p1 = object.center + r1 * unit[perm1[j]];
-      const Eigen::Vector3d p2 = object.center + r2 * unit[perm2[j]];
-      const Eigen::Vector3d p3 = object.center + r2 * unit[perm3[j]];
-      if (!is_acute_triangle(p1, p2, p3, params.min_triangle_area_m2)) continue;
-      ++st.triangles_acute;
-      ScanFailure why = ScanFailure::kNone;
-      std::optional<GraspRegion> region =
-          scan_cord_set(object, p1, p2, p3, palm_width_m, params, &why);
-      if (why != ScanFailure::kSeedCord) ++st.seed_cords;
-      if (why == ScanFailure::kNone || why == ScanFailure::kSideCord) ++st.sets_tried;
-      if (region) {
-        ++st.sets_valid;
-        if (side_cords_missed(*region) == 0) ++full;
-        found.push_back(std::move(*region));
+    int j = 0;
+    while (j < count && !enough() && !stop) {
+      pending.clear();
+      for (int k = j, acute = 0; k < count && acute < batch; ++k) {
+        Sampled& c = pending.emplace_back();
+        c.j = k;
+        c.p1 = object.center + r1 * unit[perm1[k]];
+        c.p2 = object.center + r2 * unit[perm2[k]];
+        c.p3 = object.center + r2 * unit[perm3[k]];
+        c.acute = is_acute_triangle(c.p1, c.p2, c.p3, params.min_triangle_area_m2);
+        acute += c.acute ? 1 : 0;
+      }
+      parallel_for(int(pending.size()), threads, [&](int i) {
+        Sampled& c = pending[size_t(i)];
+        if (c.acute) c.region = scan_cord_set(object, c.p1, c.p2, c.p3, palm_width_m, params, &c.why);
+      });
+      for (Sampled& c : pending) {
+        if (enough()) break;
+        if ((c.j & 63) == 0 && out_of_time()) {
+          stop = true;
+          break;
+        }
+        j = c.j + 1;
+        ++st.triangles_sampled;
+        if (!c.acute) continue;
+        ++st.triangles_acute;
+        if (c.why != ScanFailure::kSeedCord) ++st.seed_cords;
+        if (c.why == ScanFailure::kNone || c.why == ScanFailure::kSideCord) ++st.sets_tried;
+        if (c.region) {
+          ++st.sets_valid;
+          if (side_cords_missed(*c.region) == 0) ++full;
+          found.push_back(std::move(*c.region));
+        }
       }
     }
   }

@@ -75,7 +75,11 @@ TEST(ExploreCords, ThreadsDoNotChangeTheRegionsOrTheCounters) {
   ASSERT_GT(s1.improvement_valid, 0);  // the threaded part ran
   ASSERT_EQ(a.size(), b.size());
   for (size_t k = 0; k < a.size(); ++k) expect_identical(a[k], b[k]);
+  EXPECT_EQ(s1.iterations, s3.iterations);
   EXPECT_EQ(s1.triangles_sampled, s3.triangles_sampled);
+  EXPECT_EQ(s1.triangles_acute, s3.triangles_acute);
+  EXPECT_EQ(s1.seed_cords, s3.seed_cords);
+  EXPECT_EQ(s1.sets_tried, s3.sets_tried);
   EXPECT_EQ(s1.sets_valid, s3.sets_valid);
   EXPECT_EQ(s1.improvement_tried, s3.improvement_tried);
   EXPECT_EQ(s1.improvement_valid, s3.improvement_valid);

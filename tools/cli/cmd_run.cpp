@@ -45,7 +45,7 @@ void add_run_command(CLI::App& app) {
       ->check(physics_tests(true))
       ->capture_default_str();
   cmd->add_option("--jobs,-j", opt->run.jobs,
-                  "Threads: the cord exploration's local improvement, and grasps simulated at once "
+                  "Threads: the cord exploration's scans, and grasps simulated at once "
                   "(one physics world each); results do not depend on it")
       ->check(whole_number_in(1, 256))
       ->capture_default_str();

@@ -31,8 +31,8 @@ struct ExplorationStats {
 /// χ (ties keep discovery order). Same params (seed) → identical regions, unless the time cap is
 /// hit. `palm_width_m` is W_palm (docs/algorithm.md §4) [m].
 /// `object_bvh`: the mesh's build_object_bvh when one exists (the collider's), else built.
-/// `threads`: local improvement scans its perturbations on this many threads; the regions and
-/// counters do not depend on it.
+/// `threads`: sampled guide triangles (a few at a time) and local improvement's perturbations
+/// are scanned on this many threads; the regions and counters do not depend on it.
 /// @throws std::invalid_argument for an empty mesh or palm_width_m ≤ 0.
 std::vector<GraspRegion> explore_cords(const Mesh& mesh, double palm_width_m,
                                        const CordParams& params = {},
