@@ -25,6 +25,16 @@ Eigen::Vector3d vertex_mean(const Mesh& mesh) {
   return mesh.vertices.empty() ? sum : Eigen::Vector3d(sum / double(mesh.vertices.size()));
 }
 
+std::vector<Eigen::Vector3d> referenced_vertices(const Mesh& mesh) {
+  std::vector<char> used(mesh.vertices.size(), 0);
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) used[static_cast<size_t>(t[k])] = 1;
+  std::vector<Eigen::Vector3d> out;
+  for (size_t i = 0; i < mesh.vertices.size(); ++i)
+    if (used[i]) out.push_back(mesh.vertices[i]);
+  return out;
+}
+
 double bounding_radius(const Mesh& mesh, const Eigen::Vector3d& center) {
   double r2 = 0.0;
   for (const auto& v : mesh.vertices) r2 = std::max(r2, (v - center).squaredNorm());

@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
 #include "cordgrasp/core/convex_hull_volume.h"
+#include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/orient_triangles.h"
 #include "cordgrasp/core/shape_builders.h"
 #include "cordgrasp/core/shapes.h"
@@ -188,6 +190,49 @@ TEST(ConvexHullVolume, NonConvexAndOpenMeshesGetTheirHull) {
   Mesh open = make_box_mesh({0.1, 0.2, 0.3});
   open.triangles.resize(10);
   EXPECT_NEAR(convex_hull_volume(open).volume_m3, 0.006, 1e-15);
+}
+
+TEST(ColumnExtremePoints, KeepTheHullOfADenseScanWithinTheirBound) {
+  // A bumpy sphere of 320 k vertices, a scan's density: the column extremes on a 64-cell grid
+  // are a few per cent of the points, in input order, and their hull reaches every direction's
+  // farthest point to within √2 cell widths (the bound column_extreme_points states).
+  Mesh scan = make_sphere_mesh(0.05, 400, 800);
+  for (Eigen::Vector3d& v : scan.vertices)
+    v *= 1.0 + 0.02 * std::sin(40.0 * v.x() / 0.05) * std::cos(30.0 * v.z() / 0.05);
+  constexpr int kCells = 64;
+  const std::vector<Eigen::Vector3d> kept = column_extreme_points(scan.vertices, kCells);
+  ASSERT_GE(kept.size(), 4u);
+  EXPECT_LE(kept.size(), size_t(6 * kCells * kCells));
+  EXPECT_LT(kept.size(), scan.vertices.size() / 10);
+  size_t next = 0;  // a subsequence of the input
+  for (const Eigen::Vector3d& p : kept) {
+    while (next < scan.vertices.size() && scan.vertices[next] != p) ++next;
+    ASSERT_LT(next, scan.vertices.size());
+    ++next;
+  }
+  const Eigen::Vector3d size = mesh_bounds(scan).size();
+  const double bound_m = std::sqrt(2.0) * size.maxCoeff() / kCells;
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> g;
+  for (int k = 0; k < 200; ++k) {
+    const Eigen::Vector3d d = Eigen::Vector3d(g(rng), g(rng), g(rng)).normalized();
+    double all = -1e9, some = -1e9;
+    for (const Eigen::Vector3d& v : scan.vertices) all = std::max(all, d.dot(v));
+    for (const Eigen::Vector3d& v : kept) some = std::max(some, d.dot(v));
+    EXPECT_LE(some, all);
+    EXPECT_GE(some, all - bound_m) << k;
+  }
+  const double exact = convex_hull_volume(scan).volume_m3;
+  const double reduced = convex_hull_volume(kept).volume_m3;
+  EXPECT_LE(reduced, exact * (1.0 + 1e-12));
+  EXPECT_GE(reduced, 0.99 * exact);
+}
+
+TEST(ColumnExtremePoints, FewPointsOrNoGridAreKeptAsTheyAre) {
+  const std::vector<Eigen::Vector3d> three = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  EXPECT_EQ(column_extreme_points(three, 8), three);
+  const std::vector<Eigen::Vector3d> same(5, Eigen::Vector3d(0.1, 0.2, 0.3));
+  EXPECT_EQ(column_extreme_points(same, 8), same);  // no extent: no grid
 }
 
 TEST(ConvexHullVolume, FlatOrTinyInputGivesZeroVolumeAndVertexMean) {

@@ -20,6 +20,9 @@ Aabb mesh_bounds(const Mesh& mesh);
 /// Barycenter C: the vertex mean, as Simox TriMeshModel::getCOM (docs/algorithm.md §1) [m].
 Eigen::Vector3d vertex_mean(const Mesh& mesh);
 
+/// The vertices that some triangle uses, in index order.
+std::vector<Eigen::Vector3d> referenced_vertices(const Mesh& mesh);
+
 /// Bounding-sphere radius r = max ‖V − C‖ over vertices (docs/algorithm.md §1) [m].
 double bounding_radius(const Mesh& mesh, const Eigen::Vector3d& center);
 

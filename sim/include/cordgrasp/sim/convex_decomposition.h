@@ -68,8 +68,8 @@ std::vector<Eigen::Vector3d> simplified_convex_hull(const std::vector<Eigen::Vec
 std::vector<Eigen::Vector3d> reduced_convex_hull(const std::vector<Eigen::Vector3d>& hull_vertices,
                                                  int max_vertices);
 
-/// 64-bit FNV-1a hash of the mesh geometry (vertex coordinates and triangle indices), as 16 hex
-/// digits.
+/// 64-bit hash of the mesh geometry (vertex coordinates and triangle indices; FNV-1a's step
+/// over 8-byte words), as 16 hex digits.
 std::string mesh_hash(const Mesh& mesh);
 
 }  // namespace cordgrasp
