@@ -268,6 +268,9 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
     }
     detail::reserve_huge(builder.mesh.triangles, faces);
     detail::reserve_huge(builder.mesh.vertices, vertices);
+    // A closed surface has about half as many distinct vertices as faces: the weld table
+    // starts at that (not at an OBJ's vertex per face corner) and grows only for a soup.
+    builder.index_of = detail::WeldTable(std::min(vertices, faces / 2 + 16));
   }
   builder.add_node(*scene, *scene->mRootNode, aiMatrix4x4());
   Mesh& mesh = builder.mesh;

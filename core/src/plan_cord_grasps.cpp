@@ -1,7 +1,9 @@
 #include "cordgrasp/core/plan_cord_grasps.h"
 
 #include <algorithm>
+#include <future>
 #include <numeric>
+#include <optional>
 
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/palm_width.h"
@@ -28,15 +30,16 @@ PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand
                                          const std::vector<GraspRegion>& regions,
                                          const PlanParams& params, double exploration_s,
                                          const std::vector<int>* order_in,
-                                         const CancelToken& cancel) {
+                                         const CancelToken& cancel, const PlanContext* context) {
   using internal::seconds_since;
   const auto start = std::chrono::steady_clock::now();
   PlanResult result;
   PlanStats& stats = result.stats;
   stats.exploration_s = exploration_s;
   stats.regions = static_cast<int>(regions.size());
-  const internal::PlanContext ctx =
-      internal::make_plan_context(mesh, hand, collider, params, stats);
+  std::optional<PlanContext> own;
+  if (!context) own = internal::make_plan_context(mesh, hand, collider, params, stats);
+  const PlanContext& ctx = context ? *context : *own;
 
   std::vector<size_t> order;
   if (order_in) {
@@ -122,14 +125,34 @@ PlanResult plan_cord_grasps(const Mesh& mesh, const HandModel& hand, HandObjectC
   if (explore.time_limit_s <= 0.0 || explore.time_limit_s > params.time_limit_s)
     explore.time_limit_s = params.time_limit_s;
   const double w_palm = palm_width(hand);
+  // With threads to spare, the object's constants (a scan's solid volume, principal axes)
+  // are derived beside the exploration.
+  double object_s = 0.0;
+  std::future<PlanContext> object;
+  if (threads > 1)
+    object = std::async(std::launch::async, [&]() {
+      const auto t0 = std::chrono::steady_clock::now();
+      PlanContext ctx = object_plan_context(mesh, params);
+      object_s = internal::seconds_since(t0);
+      return ctx;
+    });
   ExplorationStats explored;
   const std::vector<GraspRegion> regions =
       explore_cords(mesh, w_palm, explore, &explored, collider.object_bvh(), threads);
   if (exploration) *exploration = explored;
+  std::optional<PlanContext> ctx;
+  double hand_s = 0.0;
+  if (object.valid()) {
+    ctx = object.get();
+    const auto t0 = std::chrono::steady_clock::now();
+    ctx->setup = prepare_hand(hand, collider);
+    hand_s = internal::seconds_since(t0);
+  }
   const std::vector<int> order = cord_region_order(regions, w_palm, explore);
   PlanResult result = plan_cord_grasps_from_regions(mesh, hand, collider, regions, params,
-                                                    internal::seconds_since(start), &order,
-                                                    cancel);
+                                                    internal::seconds_since(start), &order, cancel,
+                                                    ctx ? &*ctx : nullptr);
+  if (ctx) result.stats.setup_s = object_s + hand_s;  // CPU time, partly beside the exploration
   if (explored.hit_time_limit && static_cast<int>(result.grasps.size()) < params.grasps)
     result.stats.timed_out = true;  // fewer regions than a faster machine would have found
   return result;

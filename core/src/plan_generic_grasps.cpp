@@ -30,8 +30,7 @@ PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
   const auto start = std::chrono::steady_clock::now();
   PlanResult result;
   PlanStats& stats = result.stats;
-  const internal::PlanContext ctx =
-      internal::make_plan_context(mesh, hand, collider, params, stats);
+  const PlanContext ctx = internal::make_plan_context(mesh, hand, collider, params, stats);
 
   // Area-weighted triangle sampling.
   std::vector<double> areas(mesh.triangles.size(), 0.0);

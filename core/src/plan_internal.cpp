@@ -1,7 +1,6 @@
 #include "plan_internal.h"
 
 #include "cordgrasp/core/candidate_measures.h"
-#include "cordgrasp/core/convex_hull_volume.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/skewness.h"
@@ -11,13 +10,7 @@ namespace cordgrasp::internal {
 PlanContext make_plan_context(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
                               const PlanParams& params, PlanStats& stats) {
   const auto start = std::chrono::steady_clock::now();
-  PlanContext ctx;
-  ctx.setup = prepare_hand(hand, collider);
-  ctx.wrench_object = prepare_wrench_space(mesh, params.quality);
-  ctx.principal_axis_O = principal_axes(mesh).axes.col(0);
-  const std::optional<SolidVolume> closed = closed_mesh_volume(mesh);
-  ctx.com_O = closed ? closed->center_of_mass_m : convex_hull_volume(mesh).center_of_mass_m;
-  ctx.radius_m = bounding_radius(mesh, vertex_mean(mesh));
+  PlanContext ctx = cordgrasp::make_plan_context(mesh, hand, collider, params);
   stats.setup_s += seconds_since(start);
   return ctx;
 }

@@ -4,6 +4,7 @@
 
 #include "cordgrasp/core/grasp_plan.h"
 #include "cordgrasp/core/mesh.h"
+#include "cordgrasp/core/plan_context.h"
 
 namespace cordgrasp::internal {
 
@@ -12,17 +13,7 @@ inline double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// Per-plan constants: hand setup, wrench-space object, principal axis.
-struct PlanContext {
-  HandSetup setup;
-  WrenchSpaceObject wrench_object;
-  Eigen::Vector3d principal_axis_O = Eigen::Vector3d::UnitZ();
-  /// Centre of mass at uniform density (closed volume, else convex hull) and bounding radius r.
-  Eigen::Vector3d com_O = Eigen::Vector3d::Zero();
-  double radius_m = 0.0;
-};
-
-/// Builds the PlanContext (timed into stats.setup_s).
+/// make_plan_context(), timed into stats.setup_s.
 PlanContext make_plan_context(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
                               const PlanParams& params, PlanStats& stats);
 

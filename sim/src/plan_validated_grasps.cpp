@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <ctime>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -53,6 +54,12 @@ void add_stats(PlanStats& total, const PlanStats& s) {
   total.quality_s += s.quality_s;
 }
 
+BulletColliderParams collider_params(int threads) {
+  BulletColliderParams p;
+  p.threads = threads;
+  return p;
+}
+
 /// Hands out the planner's force-closure candidates one at a time, best first: the cord planner
 /// continues in its region order after the last candidate's region and, once every region is
 /// processed, explores again with the next seed (region_rank is then the rank in that
@@ -62,8 +69,14 @@ class CandidateSource {
   CandidateSource(const Mesh& mesh, const HandModel& hand, PlannerKind planner,
                   const PlanParams& plan, const std::optional<CordParams>& cord,
                   const CancelToken& cancel, int threads)
-      : mesh_(mesh), hand_(hand), planner_(planner), plan_(plan), cord_(cord), cancel_(cancel),
-        threads_(threads), collider_(make_bullet_hand_collider(hand, mesh)) {}
+      : mesh_(mesh),
+        hand_(hand),
+        planner_(planner),
+        plan_(plan),
+        cord_(cord),
+        cancel_(cancel),
+        threads_(threads),
+        collider_(make_bullet_hand_collider(hand, mesh, collider_params(threads))) {}
 
   /// The next candidate, or nullopt when the planner has none left within `time_left_s`.
   std::optional<Grasp> next(double time_left_s, PlanStats& stats) {
@@ -75,8 +88,13 @@ class CandidateSource {
       // Every region processed: explore again with the next seed (new regions), a few times.
       while (order_.empty() && explorations_ < kMaxExplorations) explore(time_left_s, stats);
       if (order_.empty()) return std::nullopt;
-      const PlanResult r = plan_cord_grasps_from_regions(mesh_, hand_, *collider_, regions_,
-                                                         params, 0.0, &order_, cancel_);
+      if (!context_) {  // once for every candidate
+        const auto start = Clock::now();
+        context_ = make_plan_context(mesh_, hand_, *collider_, plan_);
+        stats.setup_s += seconds_since(start);
+      }
+      const PlanResult r = plan_cord_grasps_from_regions(mesh_, hand_, *collider_, regions_, params,
+                                                         0.0, &order_, cancel_, &*context_);
       add_stats(stats, r.stats);
       if (r.stats.interrupted) return std::nullopt;
       if (r.grasps.empty()) {
@@ -122,8 +140,9 @@ class CandidateSource {
   const PlanParams& plan_;
   const std::optional<CordParams>& cord_;
   CancelToken cancel_;
-  int threads_;  ///< the exploration's local improvement
+  int threads_;  ///< the exploration's scans
   std::unique_ptr<HandObjectCollider> collider_;
+  std::optional<PlanContext> context_;        ///< made at the first cord candidate
   static constexpr int kMaxExplorations = 4;  ///< the first and three with later seeds
   int explorations_ = 0;
   std::vector<GraspRegion> regions_;

@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <numeric>
 #include <random>
 #include <tuple>
 
@@ -121,6 +122,51 @@ TEST(MeshBvh, ObjectBvhOfALargeScanHasAQuarterOfTheNodes) {
   for (const MeshBvh::Node& n : l.nodes) largest_leaf = std::max(largest_leaf, n.count);
   EXPECT_LE(largest_leaf, kLargeMeshLeafTriangles);
   EXPECT_EQ(l.triangles.size(), large.triangles.size());
+}
+
+TEST(MeshBvh, ObjectBvhOfALargeScanIsTheSameBuiltOnTwoThreads) {
+  const Mesh scan = make_sphere_mesh(0.05, 350, 360);
+  ASSERT_GT(static_cast<int>(scan.triangles.size()), kLargeMeshTriangles);
+  const MeshBvh one = build_object_bvh(scan, 1), two = build_object_bvh(scan, 2);
+  ASSERT_EQ(one.nodes.size(), two.nodes.size());
+  for (size_t k = 0; k < one.nodes.size(); ++k) {
+    ASSERT_EQ(one.nodes[k].lo, two.nodes[k].lo) << k;
+    ASSERT_EQ(one.nodes[k].hi, two.nodes[k].hi) << k;
+    ASSERT_EQ(one.nodes[k].radius, two.nodes[k].radius) << k;
+    ASSERT_EQ(one.nodes[k].first, two.nodes[k].first) << k;
+    ASSERT_EQ(one.nodes[k].count, two.nodes[k].count) << k;
+  }
+  EXPECT_EQ(one.triangle_ids, two.triangle_ids);
+  EXPECT_EQ(one.triangles, two.triangles);
+  EXPECT_EQ(one.vertices, two.vertices);
+}
+
+TEST(MeshBvh, ObjectBvhOfALargeScanNumbersItsVerticesAlongTheLeaves) {
+  // A scan's vertices listed in a scattered order: the BVH's copy is renumbered in first use
+  // along its leaves, and every BVH triangle keeps the corners of the mesh triangle it names.
+  Mesh scan = make_sphere_mesh(0.05, 350, 360);
+  ASSERT_GT(static_cast<int>(scan.triangles.size()), kLargeMeshTriangles);
+  std::vector<int> order(scan.vertices.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::shuffle(order.begin(), order.end(), std::mt19937_64(5));
+  std::vector<Eigen::Vector3d> scattered(scan.vertices.size());
+  for (size_t i = 0; i < order.size(); ++i) scattered[size_t(order[i])] = scan.vertices[i];
+  for (Eigen::Vector3i& t : scan.triangles)
+    for (int k = 0; k < 3; ++k) t[k] = order[size_t(t[k])];
+  scan.vertices = scattered;
+  const MeshBvh bvh = build_object_bvh(scan);
+  ASSERT_EQ(bvh.triangles.size(), scan.triangles.size());
+  EXPECT_EQ(bvh.vertices.size(), scan.vertices.size());
+  int next = 0;  // first uses come in order 0, 1, 2, ...
+  for (size_t k = 0; k < bvh.triangles.size(); ++k) {
+    const Eigen::Vector3i& t = bvh.triangles[k];
+    const Eigen::Vector3i& m = scan.triangles[static_cast<size_t>(bvh.triangle_ids[k])];
+    for (int c = 0; c < 3; ++c) {
+      ASSERT_EQ(bvh.vertices[size_t(t[c])], scan.vertices[size_t(m[c])]) << k;
+      ASSERT_LE(t[c], next) << k;
+      if (t[c] == next) ++next;
+    }
+  }
 }
 
 TEST(PlaneCrossSection, SharedEdgesGiveOnePointPerCrossingOfAClosedSurface) {

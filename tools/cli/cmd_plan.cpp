@@ -126,7 +126,7 @@ void add_plan_command(CLI::App& app) {
   cmd->add_option("--physics", opt->validation.physics_file,
                   std::string("--validate: ") + kPhysicsHelp);
   cmd->add_option("--jobs,-j", opt->jobs,
-                  "Threads: the cord exploration's scans, and with --validate the "
+                  "Threads: a scan's set-up, the cord exploration's scans, and with --validate the "
                   "trials simulated at once (one physics world each); results do not depend on it")
       ->check(whole_number_in(1, 256))
       ->capture_default_str();

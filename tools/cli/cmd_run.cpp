@@ -44,9 +44,10 @@ void add_run_command(CLI::App& app) {
                   "grasps only)")
       ->check(physics_tests(true))
       ->capture_default_str();
-  cmd->add_option("--jobs,-j", opt->run.jobs,
-                  "Threads: the cord exploration's scans, and grasps simulated at once "
-                  "(one physics world each); results do not depend on it")
+  cmd->add_option(
+         "--jobs,-j", opt->run.jobs,
+         "Threads: a scan's set-up, the cord exploration's scans, and grasps simulated at once "
+         "(one physics world each); results do not depend on it")
       ->check(whole_number_in(1, 256))
       ->capture_default_str();
   cmd->add_flag("--no-validate", opt->no_validate,

@@ -117,8 +117,8 @@ double point_triangle_distance2(const btVector3& p, const btVector3& a, const bt
 // far more triangles than the phalanx itself.
 class ObjectTriangles {
  public:
-  explicit ObjectTriangles(const Mesh& object)
-      : bvh_(std::make_shared<const MeshBvh>(build_object_bvh(object))) {}
+  ObjectTriangles(const Mesh& object, int threads)
+      : bvh_(std::make_shared<const MeshBvh>(build_object_bvh(object, threads))) {}
 
   /// The BVH, for the cord exploration to share.
   const std::shared_ptr<const MeshBvh>& shared() const { return bvh_; }
@@ -270,7 +270,7 @@ class BulletHandCollider final : public HandObjectCollider {
                      const BulletColliderParams& params) {
     bullet::ShapeParams sp;
     sp.link_margin_m = params.link_margin_m;
-    triangles_ = std::make_unique<ObjectTriangles>(object);
+    triangles_ = std::make_unique<ObjectTriangles>(object, params.threads);
     if (triangles_->empty())
       throw std::invalid_argument("make_bullet_hand_collider: mesh '" + object.name +
                                   "' has no non-degenerate triangle");

@@ -99,7 +99,9 @@ PlanDocument plan_document_for(const PlanJobParams& p, const Mesh& mesh,
 PlanDocument plan_job(const PlanJobParams& p, const Mesh& mesh, const std::string& object_path,
                       const HandModel& hand, const CancelToken& cancel, int threads) {
   PlanDocument doc = plan_document_for(p, mesh, object_path, hand);
-  auto collider = make_bullet_hand_collider(hand, mesh);
+  BulletColliderParams collider_params;
+  collider_params.threads = threads;
+  auto collider = make_bullet_hand_collider(hand, mesh, collider_params);
   PlanResult result;
   if (p.planner == PlannerKind::kCord)
     result = plan_cord_grasps(mesh, hand, *collider, *doc.cord, doc.params, nullptr, cancel,

@@ -20,7 +20,9 @@ struct MeshBvh {
     int count = 0;  ///< leaf: number of triangles; 0 marks an inner node (left child = own + 1)
   };
   std::vector<Node> nodes;                 ///< nodes[0] is the root; empty for an empty mesh
-  std::vector<Eigen::Vector3d> vertices;   ///< Mesh::vertices, same indices [m]
+  /// Mesh::vertices, same indices; build_object_bvh of a large mesh: the used ones, numbered
+  /// in first use along the leaves [m]
+  std::vector<Eigen::Vector3d> vertices;
   std::vector<Eigen::Vector3i> triangles;  ///< Mesh::triangles in leaf order
   std::vector<int> triangle_ids;           ///< index in Mesh::triangles of triangles[k]
 };
@@ -46,8 +48,10 @@ constexpr int kLargeMeshLeafTriangles = 16;
 
 /// The object's BVH that the cord exploration and the hand–object collider share (one copy
 /// for a scan of millions of triangles): the triangles of non-zero area, corner-sum order,
-/// at most 4 per leaf (kLargeMeshLeafTriangles above kLargeMeshTriangles: raw scans);
-/// triangle_ids index mesh.triangles. Empty when no triangle has an area.
-MeshBvh build_object_bvh(const Mesh& mesh);
+/// at most 4 per leaf (kLargeMeshLeafTriangles above kLargeMeshTriangles: raw scans, whose
+/// used vertices are then renumbered in first use along the leaves, so that a query reads
+/// neighbouring memory); triangle_ids index mesh.triangles. Empty when no triangle has an area.
+/// threads > 1: a large mesh's two halves are built at once (the same BVH).
+MeshBvh build_object_bvh(const Mesh& mesh, int threads = 1);
 
 }  // namespace cordgrasp

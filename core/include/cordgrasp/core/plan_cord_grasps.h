@@ -9,6 +9,7 @@
 #include "cordgrasp/core/hand_collider.h"
 #include "cordgrasp/core/hand_model.h"
 #include "cordgrasp/core/mesh.h"
+#include "cordgrasp/core/plan_context.h"
 
 namespace cordgrasp {
 
@@ -22,13 +23,15 @@ double approach_travel_m(const Mesh& mesh, const GraspRegion& region);
 /// processing order instead (indices into `regions`); a grasp's region_rank is its region's
 /// position in the processing order. `exploration_s` is recorded in the stats and every grasp's
 /// times. `collider` must be built for this hand and mesh. `cancel` is checked before each
-/// region (PlanStats::interrupted).
+/// region (PlanStats::interrupted). `context`, when given, is make_plan_context() of this mesh,
+/// hand and params, made once for many calls (PlanStats::setup_s then counts nothing).
 PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand,
                                          HandObjectCollider& collider,
                                          const std::vector<GraspRegion>& regions,
                                          const PlanParams& params, double exploration_s = 0.0,
                                          const std::vector<int>* order = nullptr,
-                                         const CancelToken& cancel = {});
+                                         const CancelToken& cancel = {},
+                                         const PlanContext* context = nullptr);
 
 /// Processing order of the cord planner: regions in ascending χ, except that sets shrunk by
 /// SideCordPolicy::kShrink (n below cords_per_side(), docs/algorithm.md §4) come after every full
@@ -46,7 +49,8 @@ std::vector<int> cord_region_order(const std::vector<GraspRegion>& regions, doub
 /// plan_cord_grasps_from_regions() in cord_region_order(). The exploration shares
 /// params.time_limit_s (its own cap is min(cord.time_limit_s, params.time_limit_s)).
 /// `exploration`, when given, receives its stats; `cancel` stops the finger stage early (the
-/// exploration runs to its end). `threads`: explore_cords()'s (the result does not depend on it).
+/// exploration runs to its end). `threads`: explore_cords()'s, and above 1 the object's part of
+/// the plan context is made beside the exploration (the result does not depend on it).
 PlanResult plan_cord_grasps(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
                             const CordParams& cord, const PlanParams& params,
                             ExplorationStats* exploration = nullptr,

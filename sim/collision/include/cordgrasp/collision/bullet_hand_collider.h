@@ -7,13 +7,16 @@
 
 namespace cordgrasp {
 
-/// Collision margins of the Bullet collider [m] (Bullet's 4 cm default is far too large here).
+/// Collision margins of the Bullet collider [m] (Bullet's 4 cm default is far too large here),
+/// and the threads that build it.
 struct BulletColliderParams {
   /// Link shapes, shrink-wrapped by it (sim/collision/src/bullet_shapes.h).
   double link_margin_m = 0.5e-3;
   /// Widens the object's bounding box in the broad phase only; the triangles themselves are
   /// queried without margin.
   double object_margin_m = 0.0;
+  /// Threads that build the object's BVH (build_object_bvh); the collider does not depend on it.
+  int threads = 1;
 };
 
 /// HandObjectCollider on Bullet's collision library: link shapes are primitives and
