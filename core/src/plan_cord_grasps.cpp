@@ -140,6 +140,8 @@ PlanResult plan_cord_grasps(const Mesh& mesh, const HandModel& hand, HandObjectC
   const std::vector<GraspRegion> regions =
       explore_cords(mesh, w_palm, explore, &explored, collider.object_bvh(), threads);
   if (exploration) *exploration = explored;
+  const std::vector<int> order = cord_region_order(regions, w_palm, explore);
+  const double explored_s = internal::seconds_since(start);
   std::optional<PlanContext> ctx;
   double hand_s = 0.0;
   if (object.valid()) {
@@ -148,11 +150,17 @@ PlanResult plan_cord_grasps(const Mesh& mesh, const HandModel& hand, HandObjectC
     ctx->setup = prepare_hand(hand, collider);
     hand_s = internal::seconds_since(t0);
   }
-  const std::vector<int> order = cord_region_order(regions, w_palm, explore);
-  PlanResult result = plan_cord_grasps_from_regions(mesh, hand, collider, regions, params,
-                                                    internal::seconds_since(start), &order, cancel,
-                                                    ctx ? &*ctx : nullptr);
-  if (ctx) result.stats.setup_s = object_s + hand_s;  // CPU time, partly beside the exploration
+  const double after_exploration_s = internal::seconds_since(start) - explored_s;
+  PlanResult result = plan_cord_grasps_from_regions(
+      mesh, hand, collider, regions, params, explored_s, &order, cancel, ctx ? &*ctx : nullptr);
+  if (ctx) {
+    // The set-up's own time, partly beside the exploration; the wall time after the
+    // exploration (the wait for it, the hand's part) counts in the totals.
+    result.stats.setup_s = object_s + hand_s;
+    result.stats.total_s += after_exploration_s;
+    if (result.stats.first_force_closure_s)
+      *result.stats.first_force_closure_s += after_exploration_s;
+  }
   if (explored.hit_time_limit && static_cast<int>(result.grasps.size()) < params.grasps)
     result.stats.timed_out = true;  // fewer regions than a faster machine would have found
   return result;
