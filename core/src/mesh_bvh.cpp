@@ -1,6 +1,7 @@
 #include "cordgrasp/core/mesh_bvh.h"
 
 #include <algorithm>
+#include <exception>
 #include <limits>
 #include <stdexcept>
 #include <thread>
@@ -149,9 +150,22 @@ void build_bvh_nodes(const std::vector<Eigen::Vector3d>& vertices,
     detail::reserve_huge(right_nodes, size_t(2 * ((n - mid) / min_leaf + 1)));
     Builder left{vertices, triangles, max_leaf_triangles, split, items, bvh.nodes, 0};
     Builder right{vertices, triangles, max_leaf_triangles, split, items, right_nodes, right_index};
-    std::thread worker([&]() { right.build(mid, n); });  // items[mid, n) only
-    left.build(0, mid);
+    std::exception_ptr failed;  // e.g. out of memory: thrown here, not std::terminate
+    std::thread worker([&]() {  // items[mid, n) only
+      try {
+        right.build(mid, n);
+      } catch (...) {
+        failed = std::current_exception();
+      }
+    });
+    try {
+      left.build(0, mid);
+    } catch (...) {
+      worker.join();
+      throw;
+    }
     worker.join();
+    if (failed) std::rethrow_exception(failed);
     bvh.nodes.insert(bvh.nodes.end(), right_nodes.begin(), right_nodes.end());
     Builder::join(bvh.nodes[0], bvh.nodes[1], bvh.nodes[size_t(right_index)], right_index);
   } else {
