@@ -108,7 +108,8 @@ std::vector<GraspRegion> explore_cords(const Mesh& mesh, double palm_width_m,
       }
       parallel_for(int(pending.size()), threads, [&](int i) {
         Sampled& c = pending[size_t(i)];
-        if (c.acute) c.region = scan_cord_set(object, c.p1, c.p2, c.p3, palm_width_m, params, &c.why);
+        if (c.acute)
+          c.region = scan_cord_set(object, c.p1, c.p2, c.p3, palm_width_m, params, &c.why);
       });
       for (Sampled& c : pending) {
         if (enough()) break;

@@ -1,11 +1,11 @@
 #include "cordgrasp/core/mesh_io.h"
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <algorithm>
-#include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <cctype>
 #include <cmath>
@@ -26,6 +26,7 @@
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/mesh_properties.h"
 #include "huge_pages.h"
+#include "mesh_cache.h"
 #include "mesh_text.h"
 #include "obj_check.h"
 #include "off_check.h"
@@ -188,11 +189,15 @@ std::string point_text(const Eigen::Vector3d& p) {
   return out.str();
 }
 
-}  // namespace
+/// Formats whose geometry is all in the file itself (a DAE or glTF may read other files).
+bool geometry_in_one_file(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".obj" || ext == ".stl" || ext == ".ply" || ext == ".off";
+}
 
-Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoadReport* report) {
-  if (!(std::isfinite(options.scale) && options.scale > 0.0))
-    throw std::invalid_argument("load_mesh: scale must be finite and > 0");
+Mesh load_mesh_file(const std::string& path, const MeshLoadOptions& options,
+                    MeshLoadReport* report) {
   std::error_code ec;
   if (!fs::exists(path, ec)) fail(path, "file not found");
   if (fs::is_directory(path, ec)) fail(path, "is a directory, not a mesh file");
@@ -300,40 +305,68 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
   // Drop degenerate triangles: repeated corners, or an altitude (to the longest side) below the
   // precision of the file's float coordinates relative to the mesh size.
   const double min_altitude = kDegenerateAltitudeRel * mesh_bounds(mesh).size().norm();
-  std::vector<Eigen::Vector3i> kept;
-  detail::reserve_huge(kept, mesh.triangles.size());
-  for (const auto& t : mesh.triangles) {
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
+  auto degenerate = [&](const Eigen::Vector3i& t) {
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return true;
     const Eigen::Vector3d& a = mesh.vertices[t[0]];
     const Eigen::Vector3d& b = mesh.vertices[t[1]];
     const Eigen::Vector3d& c = mesh.vertices[t[2]];
     const double longest =
         std::sqrt(std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()}));
     const double double_area = (b - a).cross(c - a).norm();
-    if (double_area > min_altitude * longest) kept.push_back(t);
-  }
-  rep.degenerate_dropped = int(mesh.triangles.size() - kept.size());
-  if (kept.empty())
-    fail(path,
-         "all " + std::to_string(mesh.triangles.size()) + " triangles are degenerate (zero area)");
-  mesh.triangles = std::move(kept);
+    return !(double_area > min_altitude * longest);
+  };
+  const size_t read = mesh.triangles.size();
+  mesh.triangles.erase(std::remove_if(mesh.triangles.begin(), mesh.triangles.end(), degenerate),
+                       mesh.triangles.end());
+  rep.degenerate_dropped = int(read - mesh.triangles.size());
+  if (mesh.triangles.empty())
+    fail(path, "all " + std::to_string(read) + " triangles are degenerate (zero area)");
 
-  // Compact: keep only referenced vertices, in first-use order.
-  std::vector<int> remap;
-  detail::assign_huge(remap, mesh.vertices.size(), -1);
-  std::vector<Eigen::Vector3d> used;
-  detail::reserve_huge(used, mesh.vertices.size());
-  for (auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) {
-      int& r = remap[t[k]];
-      if (r < 0) {
-        r = int(used.size());
-        used.push_back(mesh.vertices[t[k]]);
+  // Compact: keep only referenced vertices, in first-use order. The weld numbered the vertices
+  // in first-use order over the triangles read, so with none dropped that is their order.
+  if (rep.degenerate_dropped > 0) {
+    std::vector<int> remap;
+    detail::assign_huge(remap, mesh.vertices.size(), -1);
+    std::vector<Eigen::Vector3d> used;
+    detail::reserve_huge(used, mesh.vertices.size());
+    for (auto& t : mesh.triangles)
+      for (int k = 0; k < 3; ++k) {
+        int& r = remap[t[k]];
+        if (r < 0) {
+          r = int(used.size());
+          used.push_back(mesh.vertices[t[k]]);
+        }
+        t[k] = r;
       }
-      t[k] = r;
-    }
-  mesh.vertices = std::move(used);
+    mesh.vertices = std::move(used);
+  }
   mesh.name = fs::path(path).stem().string();
+  if (report) *report = rep;
+  return mesh;
+}
+
+}  // namespace
+
+Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoadReport* report) {
+  if (!(std::isfinite(options.scale) && options.scale > 0.0))
+    throw std::invalid_argument("load_mesh: scale must be finite and > 0");
+  std::error_code ec;
+  const uintmax_t file_bytes = fs::file_size(path, ec);
+  if (options.cache_folder.empty() || ec || file_bytes < options.cache_min_file_bytes ||
+      !geometry_in_one_file(path))
+    return load_mesh_file(path, options, report);
+  const std::string cached = detail::mesh_cache_file(path, options);
+  MeshLoadReport rep;
+  if (!cached.empty()) {
+    if (std::optional<Mesh> mesh = detail::read_cached_mesh(cached, rep)) {
+      mesh->name = fs::path(path).stem().string();
+      rep.from_cache = true;
+      if (report) *report = rep;
+      return std::move(*mesh);
+    }
+  }
+  Mesh mesh = load_mesh_file(path, options, &rep);
+  if (!cached.empty()) detail::write_cached_mesh(cached, mesh, rep, options.cache_max_bytes);
   if (report) *report = rep;
   return mesh;
 }

@@ -14,6 +14,7 @@
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
+#include "scoped_env.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
@@ -24,29 +25,7 @@ using test::test_data;
 
 constexpr const char* kPackage = "cordgrasp_test_meshes";
 
-/// Sets (or unsets, for nullopt) an environment variable for the scope; restores it after.
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const std::optional<std::string>& value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    if (value)
-      ::setenv(name, value->c_str(), 1);
-    else
-      ::unsetenv(name);
-  }
-  ~ScopedEnv() {
-    if (old_)
-      ::setenv(name_, old_->c_str(), 1);
-    else
-      ::unsetenv(name_);
-  }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
+using test::ScopedEnv;
 
 /// A fresh directory under the system temp dir, removed at the end of the scope.
 class TempDir {

@@ -11,6 +11,7 @@
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/jobs/plan_json.h"
+#include "scoped_env.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
@@ -60,6 +61,28 @@ TEST(PlannerKind, NamesRoundTripAndAnUnknownOneIsRefused) {
     EXPECT_EQ(parse_planner_kind(to_string(k)), k);
   EXPECT_STREQ(to_string(PlannerKind::kCord), "cord");  // plan.json and scripts use the names
   EXPECT_THROW(parse_planner_kind("magic"), std::invalid_argument);
+}
+
+TEST(MeshCacheFolder, TheVariableThenXdgThenHome) {
+  using test::ScopedEnv;
+  const ScopedEnv home("HOME", std::string("/home/user"));
+  {
+    const ScopedEnv set("CORDGRASP_MESH_CACHE", std::string("/scratch/meshes"));
+    EXPECT_EQ(mesh_cache_folder(), "/scratch/meshes");
+    EXPECT_EQ(job_mesh_load_options(LengthUnits::kMillimeters, 2.0).cache_folder,
+              "/scratch/meshes");
+  }
+  {
+    const ScopedEnv off("CORDGRASP_MESH_CACHE", std::string("off"));
+    EXPECT_EQ(mesh_cache_folder(), "");
+  }
+  const ScopedEnv unset("CORDGRASP_MESH_CACHE", std::nullopt);
+  {
+    const ScopedEnv xdg("XDG_CACHE_HOME", std::string("/var/cache/user"));
+    EXPECT_EQ(mesh_cache_folder(), "/var/cache/user/cordgrasp/meshes");
+  }
+  const ScopedEnv no_xdg("XDG_CACHE_HOME", std::nullopt);
+  EXPECT_EQ(mesh_cache_folder(), "/home/user/.cache/cordgrasp/meshes");
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/palm_width.h"
+#include "cordgrasp/jobs/plan_job.h"
 #include "cordgrasp/jobs/region_json.h"
 #include "cordgrasp/jobs/render_options.h"
 
@@ -15,9 +16,7 @@ namespace cordgrasp {
 ExploreOutcome explore_job(const ExploreJobParams& opt) {
   ExploreOutcome out;
   if (!opt.json_path.empty()) check_output_file(opt.json_path);  // before exploring
-  MeshLoadOptions load;
-  load.units = opt.units;
-  load.scale = opt.scale;
+  const MeshLoadOptions load = job_mesh_load_options(opt.units, opt.scale);
   const Mesh mesh = load_mesh(opt.object, load);
   out.object_name = mesh.name;
   out.triangles = static_cast<int>(mesh.triangles.size());

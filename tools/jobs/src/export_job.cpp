@@ -64,9 +64,8 @@ ExportOutcome export_job(const ExportJobParams& p) {
     return out;
   }
 
-  MeshLoadOptions mesh_opt;
-  mesh_opt.units = parse_length_units(plan.object_units);
-  mesh_opt.scale = plan.object_scale;
+  const MeshLoadOptions mesh_opt =
+      job_mesh_load_options(parse_length_units(plan.object_units), plan.object_scale);
   const Mesh object = load_mesh(plan.object_path, mesh_opt);
   if (p.format == ExportFormat::kMjcf) {
     // The bounded close of every grasp as `cordgrasp validate` (protocol standard) runs it.

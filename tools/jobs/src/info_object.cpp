@@ -9,15 +9,14 @@
 #include "cordgrasp/core/mesh_topology.h"
 #include "cordgrasp/core/mesh_volume.h"
 #include "cordgrasp/jobs/info.h"
+#include "cordgrasp/jobs/plan_job.h"
 #include "json_util.h"
 
 namespace cordgrasp {
 
 nlohmann::json object_info_json(const std::string& path, const std::string& units,
                                 double scale) {
-  MeshLoadOptions opt;
-  opt.units = parse_length_units(units);
-  opt.scale = scale;
+  const MeshLoadOptions opt = job_mesh_load_options(parse_length_units(units), scale);
   MeshLoadReport report;
   const Mesh mesh = load_mesh(path, opt, &report);
   const Aabb box = mesh_bounds(mesh);

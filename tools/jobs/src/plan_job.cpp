@@ -1,10 +1,12 @@
 #include "cordgrasp/jobs/plan_job.h"
 
+#include <cstdlib>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
 
+#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/explore_cords.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/mesh_properties.h"
@@ -12,17 +14,33 @@
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/plan_generic_grasps.h"
 #include "cordgrasp/core/version.h"
-#include "cordgrasp/collision/bullet_hand_collider.h"
 
 namespace cordgrasp {
 std::string absolute_path(const std::string& path) {
   return std::filesystem::absolute(path).lexically_normal().string();
 }
 
-Mesh load_job_mesh(const PlanJobParams& p, const std::string& object_path) {
+std::string mesh_cache_folder() {
+  namespace fs = std::filesystem;
+  if (const char* dir = std::getenv("CORDGRASP_MESH_CACHE"))
+    return std::string(dir) == "off" ? std::string() : std::string(dir);
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  if (xdg && *xdg) return (fs::path(xdg) / "cordgrasp" / "meshes").string();
+  const char* home = std::getenv("HOME");
+  if (home && *home) return (fs::path(home) / ".cache" / "cordgrasp" / "meshes").string();
+  return {};
+}
+
+MeshLoadOptions job_mesh_load_options(LengthUnits units, double scale) {
   MeshLoadOptions load;
-  load.units = p.units;
-  load.scale = p.scale;
+  load.units = units;
+  load.scale = scale;
+  load.cache_folder = mesh_cache_folder();
+  return load;
+}
+
+Mesh load_job_mesh(const PlanJobParams& p, const std::string& object_path) {
+  const MeshLoadOptions load = job_mesh_load_options(p.units, p.scale);
   MeshLoadReport report;
   Mesh mesh = load_mesh(object_path, load, &report);
   if (report.auto_chose_mm)

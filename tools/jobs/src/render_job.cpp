@@ -72,9 +72,7 @@ std::string run_render_regions(const RenderJobParams& opt, const Warn& /*warn*/)
       !opt.objects.empty() ? opt.objects[0] : j.value("object", std::string());
   if (object_path.empty())
     throw InputError("render: '" + opt.regions + "': no object; give --object");
-  MeshLoadOptions load;
-  load.units = parse_length_units(opt.units);
-  load.scale = opt.scale;
+  const MeshLoadOptions load = job_mesh_load_options(parse_length_units(opt.units), opt.scale);
   const auto object = std::make_shared<const Mesh>(load_mesh(object_path, load));
   const double radius = bounding_radius(*object, vertex_mean(*object));
 
@@ -121,9 +119,7 @@ std::string run_render_regions(const RenderJobParams& opt, const Warn& /*warn*/)
 
 // Objects: one picture, or with several --object a contact sheet of one tile (--size) each.
 std::string run_render_objects(const RenderJobParams& opt, const Warn& /*warn*/) {
-  MeshLoadOptions load;
-  load.units = parse_length_units(opt.units);
-  load.scale = opt.scale;
+  const MeshLoadOptions load = job_mesh_load_options(parse_length_units(opt.units), opt.scale);
   Renderer renderer;
   std::vector<Image> tiles;
   std::vector<std::string> captions;
@@ -237,9 +233,8 @@ std::string run_render_plan(const RenderJobParams& opt, const Warn& warn) {
   if (first < 0 || first >= count)
     throw InputError("render: --grasp " + std::to_string(opt.grasp) + ": '" + opt.plan +
                      "' has grasps 0.." + std::to_string(count - 1));
-  MeshLoadOptions load;
-  load.units = parse_length_units(plan.object_units);
-  load.scale = plan.object_scale;
+  const MeshLoadOptions load =
+      job_mesh_load_options(parse_length_units(plan.object_units), plan.object_scale);
   const auto object = std::make_shared<const Mesh>(load_mesh(plan.object_path, load));
   bool stored_regions = true;  // every grasp carries its region: no need to replay
   for (int k = first; k <= last; ++k) stored_regions &= plan.grasps[k].region.has_value();

@@ -106,9 +106,9 @@ SimDocument validate_job(const ValidateJobParams& opt, const ValidateJobCallback
   const int trials = hold.test.max_draws;  // per grasp, with or without uncertainty
 
   // Object: the plan's, or the one given (which must be the plan's geometry).
-  MeshLoadOptions mesh_opt;
-  mesh_opt.units = parse_length_units(opt.units.empty() ? plan.object_units : opt.units);
-  mesh_opt.scale = opt.scale.value_or(plan.object_scale);
+  const MeshLoadOptions mesh_opt =
+      job_mesh_load_options(parse_length_units(opt.units.empty() ? plan.object_units : opt.units),
+                            opt.scale.value_or(plan.object_scale));
   Mesh mesh;
   if (opt.object.empty()) {
     mesh = load_mesh(resolve_object_path(plan.object_path), mesh_opt);  // or a shipped name

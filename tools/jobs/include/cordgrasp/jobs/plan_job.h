@@ -39,9 +39,16 @@ struct PlanJobParams {
   }
 };
 
+/// The commands' mesh cache folder (MeshLoadOptions::cache_folder): $CORDGRASP_MESH_CACHE
+/// ("off": none), else $XDG_CACHE_HOME/cordgrasp/meshes, else ~/.cache/cordgrasp/meshes.
+std::string mesh_cache_folder();
+
+/// The commands' load options: `units`, `scale` and the mesh cache folder.
+MeshLoadOptions job_mesh_load_options(LengthUnits units, double scale);
+
 /// Loads the object mesh in p.units, scaled by p.scale. Says on stderr when --units auto read it
-/// as millimetres,
-/// and warns when a file read as meters is over 5 m across (a millimetre file given as m).
+/// as millimetres, and warns when a file read as meters is over 5 m across (a millimetre file given
+/// as m).
 /// @throws InputError as load_mesh.
 Mesh load_job_mesh(const PlanJobParams& p, const std::string& object_path);
 
