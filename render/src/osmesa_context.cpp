@@ -1,10 +1,8 @@
 #include "osmesa_context.h"
 
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/gl.h>
-#include <GL/osmesa.h>
-
 #include <stdexcept>
+
+#include "gl_functions.h"
 
 namespace cordgrasp::render_detail {
 namespace {
@@ -25,12 +23,13 @@ OSMesaContext create_context(int profile) {
                          OSMESA_CONTEXT_MINOR_VERSION,
                          3,
                          0};
-  return OSMesaCreateContextAttribs(attribs, nullptr);
+  return osmesa::CreateContextAttribs(attribs, nullptr);
 }
 
 }  // namespace
 
 OsMesaContext::OsMesaContext() {
+  load_gl_functions();
   OSMesaContext ctx = create_context(OSMESA_CORE_PROFILE);
   if (!ctx) ctx = create_context(OSMESA_COMPAT_PROFILE);
   if (!ctx)
@@ -41,19 +40,19 @@ OsMesaContext::OsMesaContext() {
   try {
     make_current(16, 16);
   } catch (...) {
-    OSMesaDestroyContext(ctx);
+    osmesa::DestroyContext(ctx);
     context_ = nullptr;
     throw;
   }
   const auto str = [](GLenum name) {
-    const GLubyte* s = glGetString(name);
+    const GLubyte* s = gl::GetString(name);
     return s ? std::string(reinterpret_cast<const char*>(s)) : std::string("?");
   };
   description_ = "OpenGL " + str(GL_VERSION) + ", " + str(GL_RENDERER);
 }
 
 OsMesaContext::~OsMesaContext() {
-  if (context_) OSMesaDestroyContext(static_cast<OSMesaContext>(context_));
+  if (context_) osmesa::DestroyContext(static_cast<OSMesaContext>(context_));
 }
 
 void OsMesaContext::make_current(int width_px, int height_px) {
@@ -62,8 +61,8 @@ void OsMesaContext::make_current(int width_px, int height_px) {
     width_ = width_px;
     height_ = height_px;
   }
-  if (!OSMesaMakeCurrent(static_cast<OSMesaContext>(context_), buffer_.data(), GL_UNSIGNED_BYTE,
-                         width_px, height_px))
+  if (!osmesa::MakeCurrent(static_cast<OSMesaContext>(context_), buffer_.data(), GL_UNSIGNED_BYTE,
+                           width_px, height_px))
     throw std::runtime_error("render: OSMesaMakeCurrent failed for a " + std::to_string(width_px) +
                              "x" + std::to_string(height_px) + " framebuffer");
 }

@@ -1,9 +1,5 @@
 #include "cordgrasp/render/renderer.h"
 
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/gl.h>
-#include <GL/glext.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -14,6 +10,7 @@
 
 #include "cordgrasp/core/shapes.h"
 #include "cordgrasp/render/text.h"
+#include "gl_functions.h"
 #include "mesh_arrays.h"
 #include "osmesa_context.h"
 #include "shaders.h"
@@ -22,6 +19,7 @@ namespace cordgrasp {
 namespace {
 
 using render_detail::OsMesaContext;
+namespace gl = render_detail::gl;
 
 constexpr int kMaxSizePx = 8192;
 constexpr int kMaxSupersample = 4;
@@ -31,15 +29,15 @@ constexpr int kShadowMaskPx = 256;
 Eigen::Matrix4f to_float(const Eigen::Matrix4d& m) { return m.cast<float>(); }
 
 GLuint compile_shader(GLenum type, const char* source) {
-  const GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
+  const GLuint shader = gl::CreateShader(type);
+  gl::ShaderSource(shader, 1, &source, nullptr);
+  gl::CompileShader(shader);
   GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  gl::GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (!ok) {
     char log[2048] = {0};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    glDeleteShader(shader);
+    gl::GetShaderInfoLog(shader, sizeof log, nullptr, log);
+    gl::DeleteShader(shader);
     throw std::runtime_error(std::string("render: shader compilation failed: ") + log);
   }
   return shader;
@@ -52,42 +50,42 @@ class Program {
   Program(const char* vertex, const char* fragment) {
     const GLuint vs = compile_shader(GL_VERTEX_SHADER, vertex);
     const GLuint fs = compile_shader(GL_FRAGMENT_SHADER, fragment);
-    id_ = glCreateProgram();
-    glAttachShader(id_, vs);
-    glAttachShader(id_, fs);
-    glLinkProgram(id_);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
+    id_ = gl::CreateProgram();
+    gl::AttachShader(id_, vs);
+    gl::AttachShader(id_, fs);
+    gl::LinkProgram(id_);
+    gl::DeleteShader(vs);
+    gl::DeleteShader(fs);
     GLint ok = 0;
-    glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+    gl::GetProgramiv(id_, GL_LINK_STATUS, &ok);
     if (!ok) {
       char log[2048] = {0};
-      glGetProgramInfoLog(id_, sizeof log, nullptr, log);
+      gl::GetProgramInfoLog(id_, sizeof log, nullptr, log);
       throw std::runtime_error(std::string("render: shader link failed: ") + log);
     }
   }
-  void use() const { glUseProgram(id_); }
+  void use() const { gl::UseProgram(id_); }
   GLint loc(const char* name) {
     auto it = locations_.find(name);
     if (it == locations_.end())
-      it = locations_.emplace(name, glGetUniformLocation(id_, name)).first;
+      it = locations_.emplace(name, gl::GetUniformLocation(id_, name)).first;
     return it->second;
   }
   void set(const char* name, const Eigen::Matrix4f& m) {
-    glUniformMatrix4fv(loc(name), 1, GL_FALSE, m.data());
+    gl::UniformMatrix4fv(loc(name), 1, GL_FALSE, m.data());
   }
   void set(const char* name, const Eigen::Matrix3f& m) {
-    glUniformMatrix3fv(loc(name), 1, GL_FALSE, m.data());
+    gl::UniformMatrix3fv(loc(name), 1, GL_FALSE, m.data());
   }
   void set(const char* name, const Eigen::Vector4d& v) {
-    glUniform4f(loc(name), float(v[0]), float(v[1]), float(v[2]), float(v[3]));
+    gl::Uniform4f(loc(name), float(v[0]), float(v[1]), float(v[2]), float(v[3]));
   }
   void set(const char* name, const Eigen::Vector3d& v) {
-    glUniform3f(loc(name), float(v[0]), float(v[1]), float(v[2]));
+    gl::Uniform3f(loc(name), float(v[0]), float(v[1]), float(v[2]));
   }
-  void set(const char* name, float x, float y) { glUniform2f(loc(name), x, y); }
-  void set(const char* name, float x) { glUniform1f(loc(name), x); }
-  void set(const char* name, int x) { glUniform1i(loc(name), x); }
+  void set(const char* name, float x, float y) { gl::Uniform2f(loc(name), x, y); }
+  void set(const char* name, float x) { gl::Uniform1f(loc(name), x); }
+  void set(const char* name, int x) { gl::Uniform1i(loc(name), x); }
   GLuint id() const { return id_; }
 
  private:
@@ -114,24 +112,24 @@ GpuMesh upload_mesh(const Mesh& mesh, double crease_angle_rad) {
     }
     g.center_M = 0.5 * (lo + hi);
   }
-  glGenVertexArrays(1, &g.vao);
-  glGenBuffers(1, &g.vbo);
-  glBindVertexArray(g.vao);
-  glBindBuffer(GL_ARRAY_BUFFER, g.vbo);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
-               GL_STATIC_DRAW);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float),
-                        reinterpret_cast<void*>(3 * sizeof(float)));
-  glBindVertexArray(0);
+  gl::GenVertexArrays(1, &g.vao);
+  gl::GenBuffers(1, &g.vbo);
+  gl::BindVertexArray(g.vao);
+  gl::BindBuffer(GL_ARRAY_BUFFER, g.vbo);
+  gl::BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
+                 GL_STATIC_DRAW);
+  gl::EnableVertexAttribArray(0);
+  gl::VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+  gl::EnableVertexAttribArray(1);
+  gl::VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float),
+                          reinterpret_cast<void*>(3 * sizeof(float)));
+  gl::BindVertexArray(0);
   return g;
 }
 
 void free_mesh(GpuMesh& g) {
-  if (g.vbo) glDeleteBuffers(1, &g.vbo);
-  if (g.vao) glDeleteVertexArrays(1, &g.vao);
+  if (g.vbo) gl::DeleteBuffers(1, &g.vbo);
+  if (g.vao) gl::DeleteVertexArrays(1, &g.vao);
   g = GpuMesh{};
 }
 
@@ -385,49 +383,50 @@ struct Renderer::Impl {
     unit_arrow_head = upload_mesh(render_detail::make_unit_cone_mesh(true, 32), kPrimitiveCrease);
     unit_cone = upload_mesh(render_detail::make_unit_cone_mesh(false, 48), kPrimitiveCrease);
 
-    glGenVertexArrays(1, &line_vao);
-    glGenBuffers(1, &line_vbo);
-    glBindVertexArray(line_vao);
-    glBindBuffer(GL_ARRAY_BUFFER, line_vbo);
-    for (int a = 0; a < 3; ++a) glEnableVertexAttribArray(a);
-    glBindVertexArray(0);
-    glGenVertexArrays(1, &cap_vao);
-    glGenBuffers(1, &cap_vbo);
-    glBindVertexArray(cap_vao);
-    glBindBuffer(GL_ARRAY_BUFFER, cap_vbo);
-    glEnableVertexAttribArray(0);
-    glBindVertexArray(0);
-    glGenVertexArrays(1, &ground_vao);
-    glGenBuffers(1, &ground_vbo);
-    glBindVertexArray(ground_vao);
-    glBindBuffer(GL_ARRAY_BUFFER, ground_vbo);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 5 * sizeof(float), nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 5 * sizeof(float),
-                          reinterpret_cast<void*>(3 * sizeof(float)));
-    glBindVertexArray(0);
-    glGenVertexArrays(1, &empty_vao);
+    gl::GenVertexArrays(1, &line_vao);
+    gl::GenBuffers(1, &line_vbo);
+    gl::BindVertexArray(line_vao);
+    gl::BindBuffer(GL_ARRAY_BUFFER, line_vbo);
+    for (int a = 0; a < 3; ++a) gl::EnableVertexAttribArray(a);
+    gl::BindVertexArray(0);
+    gl::GenVertexArrays(1, &cap_vao);
+    gl::GenBuffers(1, &cap_vbo);
+    gl::BindVertexArray(cap_vao);
+    gl::BindBuffer(GL_ARRAY_BUFFER, cap_vbo);
+    gl::EnableVertexAttribArray(0);
+    gl::BindVertexArray(0);
+    gl::GenVertexArrays(1, &ground_vao);
+    gl::GenBuffers(1, &ground_vbo);
+    gl::BindVertexArray(ground_vao);
+    gl::BindBuffer(GL_ARRAY_BUFFER, ground_vbo);
+    gl::EnableVertexAttribArray(0);
+    gl::VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 5 * sizeof(float), nullptr);
+    gl::EnableVertexAttribArray(1);
+    gl::VertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 5 * sizeof(float),
+                            reinterpret_cast<void*>(3 * sizeof(float)));
+    gl::BindVertexArray(0);
+    gl::GenVertexArrays(1, &empty_vao);
 
     // Shadow mask target (fixed size) and the blurred mask texture.
-    glGenFramebuffers(1, &shadow_fbo);
-    glGenRenderbuffers(1, &shadow_color);
-    glGenRenderbuffers(1, &shadow_depth);
-    glBindRenderbuffer(GL_RENDERBUFFER, shadow_color);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, kShadowMaskPx, kShadowMaskPx);
-    glBindRenderbuffer(GL_RENDERBUFFER, shadow_depth);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, kShadowMaskPx, kShadowMaskPx);
-    glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, shadow_color);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, shadow_depth);
+    gl::GenFramebuffers(1, &shadow_fbo);
+    gl::GenRenderbuffers(1, &shadow_color);
+    gl::GenRenderbuffers(1, &shadow_depth);
+    gl::BindRenderbuffer(GL_RENDERBUFFER, shadow_color);
+    gl::RenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, kShadowMaskPx, kShadowMaskPx);
+    gl::BindRenderbuffer(GL_RENDERBUFFER, shadow_depth);
+    gl::RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, kShadowMaskPx, kShadowMaskPx);
+    gl::BindFramebuffer(GL_FRAMEBUFFER, shadow_fbo);
+    gl::FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                shadow_color);
+    gl::FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, shadow_depth);
     check_framebuffer("shadow mask");
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glGenTextures(1, &shadow_mask);
-    glBindTexture(GL_TEXTURE_2D, shadow_mask);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl::BindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl::GenTextures(1, &shadow_mask);
+    gl::BindTexture(GL_TEXTURE_2D, shadow_mask);
+    gl::TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl::TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl::TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl::TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     check_gl("initialisation");
   }
 
@@ -441,21 +440,21 @@ struct Renderer::Impl {
     for (auto& [key, c] : cache) free_mesh(c.gpu);
     for (GpuMesh* g : {&unit_sphere, &unit_cylinder, &unit_arrow_head, &unit_cone}) free_mesh(*g);
     const GLuint buffers[] = {line_vbo, cap_vbo, ground_vbo};
-    glDeleteBuffers(3, buffers);
+    gl::DeleteBuffers(3, buffers);
     const GLuint arrays[] = {line_vao, cap_vao, ground_vao, empty_vao};
-    glDeleteVertexArrays(4, arrays);
+    gl::DeleteVertexArrays(4, arrays);
     for (GLuint p : {mesh_program.id(), line_program.id(), cap_program.id(), shadow_program.id(),
                      ground_program.id(), resolve_program.id()})
-      glDeleteProgram(p);
+      gl::DeleteProgram(p);
     release_target();
-    glDeleteFramebuffers(1, &shadow_fbo);
+    gl::DeleteFramebuffers(1, &shadow_fbo);
     const GLuint rbs[] = {shadow_color, shadow_depth};
-    glDeleteRenderbuffers(2, rbs);
-    glDeleteTextures(1, &shadow_mask);
+    gl::DeleteRenderbuffers(2, rbs);
+    gl::DeleteTextures(1, &shadow_mask);
   }
 
   static void check_gl(const char* where) {
-    const GLenum e = glGetError();
+    const GLenum e = gl::GetError();
     if (e != GL_NO_ERROR) {
       std::ostringstream s;
       s << "render: OpenGL error 0x" << std::hex << e << " during " << where;
@@ -464,7 +463,7 @@ struct Renderer::Impl {
   }
 
   static void check_framebuffer(const char* what) {
-    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    const GLenum status = gl::CheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
       std::ostringstream s;
       s << "render: " << what << " framebuffer incomplete (0x" << std::hex << status << ")";
@@ -473,9 +472,9 @@ struct Renderer::Impl {
   }
 
   void release_target() {
-    if (fbo) glDeleteFramebuffers(1, &fbo);
-    if (fbo_color) glDeleteTextures(1, &fbo_color);
-    if (fbo_depth) glDeleteRenderbuffers(1, &fbo_depth);
+    if (fbo) gl::DeleteFramebuffers(1, &fbo);
+    if (fbo_color) gl::DeleteTextures(1, &fbo_color);
+    if (fbo_depth) gl::DeleteRenderbuffers(1, &fbo_depth);
     fbo = fbo_color = fbo_depth = 0;
     fbo_w = fbo_h = 0;
   }
@@ -483,18 +482,18 @@ struct Renderer::Impl {
   void ensure_target(int w, int h) {
     if (fbo && fbo_w == w && fbo_h == h) return;
     release_target();
-    glGenFramebuffers(1, &fbo);
-    glGenTextures(1, &fbo_color);
-    glBindTexture(GL_TEXTURE_2D, fbo_color);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glGenRenderbuffers(1, &fbo_depth);
-    glBindRenderbuffer(GL_RENDERBUFFER, fbo_depth);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, w, h);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, fbo_color, 0);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, fbo_depth);
+    gl::GenFramebuffers(1, &fbo);
+    gl::GenTextures(1, &fbo_color);
+    gl::BindTexture(GL_TEXTURE_2D, fbo_color);
+    gl::TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl::TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl::TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl::GenRenderbuffers(1, &fbo_depth);
+    gl::BindRenderbuffer(GL_RENDERBUFFER, fbo_depth);
+    gl::RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, w, h);
+    gl::BindFramebuffer(GL_FRAMEBUFFER, fbo);
+    gl::FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, fbo_color, 0);
+    gl::FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, fbo_depth);
     check_framebuffer("supersampled");
     fbo_w = w;
     fbo_h = h;
@@ -671,21 +670,21 @@ Image Renderer::Impl::render(const Scene& input, const RenderParams& params, Ren
       quads.insert(quads.end(), b.quads.begin(), b.quads.end());
       caps.insert(caps.end(), b.caps.begin(), b.caps.end());
     }
-    glBindVertexArray(line_vao);
-    glBindBuffer(GL_ARRAY_BUFFER, line_vbo);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(quads.size() * sizeof(float)),
-                 quads.data(), GL_STREAM_DRAW);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
-                          reinterpret_cast<void*>(3 * sizeof(float)));
-    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
-                          reinterpret_cast<void*>(6 * sizeof(float)));
-    glBindVertexArray(cap_vao);
-    glBindBuffer(GL_ARRAY_BUFFER, cap_vbo);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(caps.size() * sizeof(float)), caps.data(),
-                 GL_STREAM_DRAW);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
-    glBindVertexArray(0);
+    gl::BindVertexArray(line_vao);
+    gl::BindBuffer(GL_ARRAY_BUFFER, line_vbo);
+    gl::BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(quads.size() * sizeof(float)),
+                   quads.data(), GL_STREAM_DRAW);
+    gl::VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
+    gl::VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
+                            reinterpret_cast<void*>(3 * sizeof(float)));
+    gl::VertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
+                            reinterpret_cast<void*>(6 * sizeof(float)));
+    gl::BindVertexArray(cap_vao);
+    gl::BindBuffer(GL_ARRAY_BUFFER, cap_vbo);
+    gl::BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(caps.size() * sizeof(float)),
+                   caps.data(), GL_STREAM_DRAW);
+    gl::VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+    gl::BindVertexArray(0);
   }
 
   // Soft shadow: mask seen from below, blurred on the CPU, laid on the floor quad.
@@ -714,16 +713,16 @@ Image Renderer::Impl::render(const Scene& input, const RenderParams& params, Ren
     sc.near_m = 0.0;
     sc.far_m = 4.0 * footprint;
     const Eigen::Matrix4d VP = projection_matrix(sc, 1.0) * V;
-    glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo);
-    glViewport(0, 0, kShadowMaskPx, kShadowMaskPx);
-    glClearColor(0.f, 0.f, 0.f, 1.f);
-    glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
+    gl::BindFramebuffer(GL_FRAMEBUFFER, shadow_fbo);
+    gl::Viewport(0, 0, kShadowMaskPx, kShadowMaskPx);
+    gl::ClearColor(0.f, 0.f, 0.f, 1.f);
+    gl::ClearDepth(1.0);
+    gl::Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gl::Enable(GL_DEPTH_TEST);
+    gl::DepthFunc(GL_LESS);
+    gl::DepthMask(GL_TRUE);
+    gl::Disable(GL_BLEND);
+    gl::Disable(GL_CULL_FACE);
     shadow_program.use();
     shadow_program.set("u_view_proj", to_float(VP));
     shadow_program.set("u_up", up);
@@ -732,20 +731,20 @@ Image Renderer::Impl::render(const Scene& input, const RenderParams& params, Ren
     for (const DrawItem& d : items) {
       if (d.rgba[3] < 0.5 || d.on_top) continue;
       shadow_program.set("u_model", to_float(d.X_WM));
-      glBindVertexArray(d.gpu->vao);
-      glDrawArrays(GL_TRIANGLES, 0, d.gpu->vertex_count);
+      gl::BindVertexArray(d.gpu->vao);
+      gl::DrawArrays(GL_TRIANGLES, 0, d.gpu->vertex_count);
     }
     std::vector<std::uint8_t> raw(kShadowMaskPx * kShadowMaskPx * 4);
-    glReadPixels(0, 0, kShadowMaskPx, kShadowMaskPx, GL_RGBA, GL_UNSIGNED_BYTE, raw.data());
+    gl::ReadPixels(0, 0, kShadowMaskPx, kShadowMaskPx, GL_RGBA, GL_UNSIGNED_BYTE, raw.data());
     std::vector<float> mask(kShadowMaskPx * kShadowMaskPx);
     for (size_t i = 0; i < mask.size(); ++i) mask[i] = raw[4 * i] / 255.0f;
     blur_mask(mask, kShadowMaskPx, std::max(1, static_cast<int>(kShadowMaskPx * 0.022)));
     std::vector<std::uint8_t> mask8(mask.size());
     for (size_t i = 0; i < mask.size(); ++i) mask8[i] = to_byte(mask[i]);
-    glBindTexture(GL_TEXTURE_2D, shadow_mask);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kShadowMaskPx, kShadowMaskPx, 0, GL_RED, GL_UNSIGNED_BYTE,
-                 mask8.data());
+    gl::BindTexture(GL_TEXTURE_2D, shadow_mask);
+    gl::PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl::TexImage2D(GL_TEXTURE_2D, 0, GL_R8, kShadowMaskPx, kShadowMaskPx, 0, GL_RED,
+                   GL_UNSIGNED_BYTE, mask8.data());
     // Floor quad: uv (0,0) at (a0, b0).
     const Eigen::Vector3d q[4] = {on_floor(sh_a0, sh_b0), on_floor(sh_a1, sh_b0),
                                   on_floor(sh_a1, sh_b1), on_floor(sh_a0, sh_b1)};
@@ -754,23 +753,23 @@ Image Renderer::Impl::render(const Scene& input, const RenderParams& params, Ren
     for (int i : {0, 1, 2, 0, 2, 3})
       quad.insert(quad.end(),
                   {float(q[i].x()), float(q[i].y()), float(q[i].z()), uv[i][0], uv[i][1]});
-    glBindBuffer(GL_ARRAY_BUFFER, ground_vbo);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(quad.size() * sizeof(float)), quad.data(),
-                 GL_STREAM_DRAW);
+    gl::BindBuffer(GL_ARRAY_BUFFER, ground_vbo);
+    gl::BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(quad.size() * sizeof(float)),
+                   quad.data(), GL_STREAM_DRAW);
   }
 
   // Main pass into the supersampled target.
   ensure_target(fr.w_px, fr.h_px);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-  glViewport(0, 0, fr.w_px, fr.h_px);
-  glClearColor(float(params.background[0]), float(params.background[1]),
-               float(params.background[2]), 1.f);
-  glClearDepth(1.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);
-  glDisable(GL_CULL_FACE);
-  glEnable(GL_PROGRAM_POINT_SIZE);
+  gl::BindFramebuffer(GL_FRAMEBUFFER, fbo);
+  gl::Viewport(0, 0, fr.w_px, fr.h_px);
+  gl::ClearColor(float(params.background[0]), float(params.background[1]),
+                 float(params.background[2]), 1.f);
+  gl::ClearDepth(1.0);
+  gl::Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  gl::Enable(GL_DEPTH_TEST);
+  gl::DepthFunc(GL_LEQUAL);
+  gl::Disable(GL_CULL_FACE);
+  gl::Enable(GL_PROGRAM_POINT_SIZE);
 
   // Opaque meshes near to far (hidden fragments then fail the depth test before shading),
   // translucent ones far to near (better blending). Stable: ties keep scene order.
@@ -804,8 +803,8 @@ Image Renderer::Impl::render(const Scene& input, const RenderParams& params, Ren
       mesh_program.set("u_normal_matrix", Eigen::Matrix3f(N.cast<float>()));
       mesh_program.set("u_color", d.rgba);
       mesh_program.set("u_shading", static_cast<int>(d.shading));
-      glBindVertexArray(d.gpu->vao);
-      glDrawArrays(GL_TRIANGLES, 0, d.gpu->vertex_count);
+      gl::BindVertexArray(d.gpu->vao);
+      gl::DrawArrays(GL_TRIANGLES, 0, d.gpu->vertex_count);
     }
   };
   const auto draw_lines = [&](bool on_top) {
@@ -820,9 +819,9 @@ Image Renderer::Impl::render(const Scene& input, const RenderParams& params, Ren
       line_program.set("u_px_scale", px_scale);
       line_program.set("u_ortho", int(fr.camera.orthographic));
       line_program.set("u_color", b.rgba);
-      glBindVertexArray(line_vao);
-      glDrawArrays(GL_TRIANGLES, static_cast<GLint>(b.quad_offset / 7),
-                   static_cast<GLsizei>(b.quads.size() / 7));
+      gl::BindVertexArray(line_vao);
+      gl::DrawArrays(GL_TRIANGLES, static_cast<GLint>(b.quad_offset / 7),
+                     static_cast<GLsizei>(b.quads.size() / 7));
       cap_program.use();
       cap_program.set("u_view", view_f);
       cap_program.set("u_proj", proj_f);
@@ -830,43 +829,43 @@ Image Renderer::Impl::render(const Scene& input, const RenderParams& params, Ren
       cap_program.set("u_px_scale", px_scale);
       cap_program.set("u_ortho", int(fr.camera.orthographic));
       cap_program.set("u_color", b.rgba);
-      glBindVertexArray(cap_vao);
-      glDrawArrays(GL_POINTS, static_cast<GLint>(b.cap_offset / 3),
-                   static_cast<GLsizei>(b.caps.size() / 3));
+      gl::BindVertexArray(cap_vao);
+      gl::DrawArrays(GL_POINTS, static_cast<GLint>(b.cap_offset / 3),
+                     static_cast<GLsizei>(b.caps.size() / 3));
     }
   };
   // Floor shadow after the opaque meshes: hidden pixels fail the depth test early.
   const auto draw_ground = [&]() {
     if (!draw_shadow) return;
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glDepthMask(GL_FALSE);
+    gl::Enable(GL_BLEND);
+    gl::BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl::DepthMask(GL_FALSE);
     ground_program.use();
     ground_program.set("u_view_proj", to_float(fr.proj * fr.view));
     ground_program.set("u_strength", float(std::clamp(params.shadow_strength, 0.0, 1.0)));
     ground_program.set("u_mask", 0);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, shadow_mask);
-    glBindVertexArray(ground_vao);
-    glDrawArrays(GL_TRIANGLES, 0, 6);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
+    gl::ActiveTexture(GL_TEXTURE0);
+    gl::BindTexture(GL_TEXTURE_2D, shadow_mask);
+    gl::BindVertexArray(ground_vao);
+    gl::DrawArrays(GL_TRIANGLES, 0, 6);
+    gl::DepthMask(GL_TRUE);
+    gl::Disable(GL_BLEND);
   };
   const auto draw_translucent = [&](bool on_top) {
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glDepthMask(GL_FALSE);
-    glEnable(GL_CULL_FACE);
+    gl::Enable(GL_BLEND);
+    gl::BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl::DepthMask(GL_FALSE);
+    gl::Enable(GL_CULL_FACE);
     for (GLenum cull : {GL_FRONT, GL_BACK}) {  // far side first, then near side
-      glCullFace(cull);
+      gl::CullFace(cull);
       draw_meshes(on_top, true);
     }
-    glDisable(GL_CULL_FACE);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
+    gl::Disable(GL_CULL_FACE);
+    gl::DepthMask(GL_TRUE);
+    gl::Disable(GL_BLEND);
   };
   for (bool on_top : {false, true}) {
-    if (on_top) glClear(GL_DEPTH_BUFFER_BIT);
+    if (on_top) gl::Clear(GL_DEPTH_BUFFER_BIT);
     draw_meshes(on_top, false);
     draw_lines(on_top);
     if (!on_top) draw_ground();
@@ -876,24 +875,24 @@ Image Renderer::Impl::render(const Scene& input, const RenderParams& params, Ren
   // Resolve into the OSMesa framebuffer at output resolution (a plain copy without
   // supersampling).
   if (fr.factor == 1) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glBlitFramebuffer(0, 0, W, H, 0, 0, W, H, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl::BindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    gl::BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    gl::BlitFramebuffer(0, 0, W, H, 0, 0, W, H, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    gl::BindFramebuffer(GL_FRAMEBUFFER, 0);
   } else {
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, W, H);
-    glDisable(GL_DEPTH_TEST);
+    gl::BindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl::Viewport(0, 0, W, H);
+    gl::Disable(GL_DEPTH_TEST);
     resolve_program.use();
     resolve_program.set("u_image", 0);
     resolve_program.set("u_factor", fr.factor);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, fbo_color);
-    glBindVertexArray(empty_vao);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
+    gl::ActiveTexture(GL_TEXTURE0);
+    gl::BindTexture(GL_TEXTURE_2D, fbo_color);
+    gl::BindVertexArray(empty_vao);
+    gl::DrawArrays(GL_TRIANGLES, 0, 3);
+    gl::BindVertexArray(0);
   }
-  glFinish();
+  gl::Finish();
   check_gl("rendering");
 
   Image image = make_image(W, params.height_px, params.background);

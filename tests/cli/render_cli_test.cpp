@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "scoped_env.h"
 #include "test_files.h"
 #include "test_paths.h"
 
@@ -197,6 +198,21 @@ TEST(CliRender, UnwritableOutputIsNamed) {
       test::run_cordgrasp("render --object " + quoted(kMug) + " --size 32x32 --out " + quoted(out));
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find(out), std::string::npos) << r.output;
+}
+
+TEST(CliRender, OsMesaIsLoadedOnlyByACommandThatRenders) {
+  // The dynamic loader lists every library it opens under LD_DEBUG=files.
+  const test::ScopedEnv debug("LD_DEBUG", std::string("files"));
+  const auto info = test::run_cordgrasp("info --object " + quoted(kMug));
+  ASSERT_EQ(info.exit_code, 0) << info.output;
+  EXPECT_NE(info.output.find("libc.so"), std::string::npos) << "LD_DEBUG had no effect";
+  EXPECT_EQ(info.output.find("libOSMesa"), std::string::npos) << info.output;
+  TempDir dir;
+  const auto render =
+      test::run_cordgrasp("render --object " + quoted(kMug) + " --size 32x32 --out " +
+                          quoted((dir.path / "x.png").string()));
+  ASSERT_EQ(render.exit_code, 0) << render.output;
+  EXPECT_NE(render.output.find("libOSMesa"), std::string::npos);
 }
 
 }  // namespace
