@@ -13,6 +13,10 @@
 #include "cordgrasp/core/geometry_points.h"
 #include "cordgrasp/core/hand_conventions.h"
 #include "cordgrasp/core/kinematics.h"
+#include "cordgrasp/core/palm_width.h"
+#include "cordgrasp/core/parallel_for.h"
+#include "cordgrasp/core/plan_cord_grasps.h"
+#include "cordgrasp/core/shapes.h"
 #include "fingertip_meeting_point.h"
 #include "urdf_import.h"
 
@@ -237,10 +241,68 @@ std::string finger_name(const HandModel& hand, const DraftFinger& f) {
   return hand.links[hand.joints[f.root_joint].child_link].name;
 }
 
+/// Test planning of a drafted GCP's place (draft_hand_description with a collider): spheres and
+/// cylinders sized to the palm width (the planner's own scale), GCP places shifted sideways, a
+/// few finger-stage attempts on each.
+constexpr double kTestDiametersRel[] = {0.3, 0.5, 0.7};  ///< of the palm width
+constexpr double kTestCylinderLengthRel = 1.5;           ///< of the palm width
+constexpr double kGcpShiftRel = 0.15;  ///< sideways shift of a candidate place, of the palm width
+constexpr int kTestAttempts = 24;      ///< finger-stage attempts per place and shape
+/// A shifted place is kept over the drafted one when it finds at least this many times as many
+/// force-closure grasps and this many more.
+constexpr double kMinGainRel = 1.25;
+constexpr int kMinGainGrasps = 3;
+constexpr double kTestTimeLimit_s = 60.0;  ///< per place and shape: a cap, the attempts decide
+
+/// Force-closure grasps found by test planning with the GCP shifted by each of `shifts_G` (in
+/// its own frame; the first is the drafted place), summed over the test shapes, which are
+/// planned on up to `threads` threads. A place that fails more of the conventions than the
+/// drafted one is not tried and scores -1.
+std::vector<int> test_plan_gcp_places(const HandModel& hand,
+                                      const std::vector<Eigen::Vector3d>& shifts_G,
+                                      double palm_width_m, const MakeCollider& make_collider,
+                                      int threads) {
+  std::vector<Mesh> shapes;
+  for (double d : kTestDiametersRel) {
+    shapes.push_back(make_sphere_mesh(0.5 * d * palm_width_m));
+    shapes.push_back(
+        make_cylinder_mesh(0.5 * d * palm_width_m, kTestCylinderLengthRel * palm_width_m));
+  }
+  const size_t drafted_problems = check_hand_conventions(hand).size();
+  std::vector<HandModel> places(shifts_G.size(), hand);
+  std::vector<bool> tried(shifts_G.size(), true);
+  for (size_t c = 0; c < shifts_G.size(); ++c) {
+    Eigen::Isometry3d& X_LG = places[c].gcp.X_LG;
+    X_LG.translation() += X_LG.linear() * shifts_G[c];
+    tried[c] = check_hand_conventions(places[c]).size() <= drafted_problems;
+  }
+  PlanParams params;
+  params.grasps = kTestAttempts;
+  params.max_attempts = kTestAttempts;
+  params.time_limit_s = kTestTimeLimit_s;
+  params.quality.contact.soft_finger_radius_m = hand.soft_finger_radius_m;  // as `plan` does
+  std::vector<std::vector<int>> found(shapes.size(), std::vector<int>(places.size(), 0));
+  parallel_for(int(shapes.size()), threads, [&](int s) {
+    // The collider holds the links' shapes only: one serves every GCP place.
+    const std::unique_ptr<HandObjectCollider> collider = make_collider(hand, shapes[s]);
+    for (size_t c = 0; c < places.size(); ++c)
+      if (tried[c])
+        found[s][c] = plan_cord_grasps(shapes[s], places[c], *collider, CordParams{}, params)
+                          .stats.force_closure;
+  });
+  std::vector<int> total(places.size(), 0);
+  for (size_t c = 0; c < places.size(); ++c) {
+    if (!tried[c]) total[c] = -1;
+    for (const auto& per_shape : found) total[c] += tried[c] ? per_shape[c] : 0;
+  }
+  return total;
+}
+
 }  // namespace
 
 HandDraft draft_hand_description(const std::string& urdf_path, const std::string& out_path,
-                                 const HandLoadOptions& options) {
+                                 const HandLoadOptions& options, const MakeCollider& make_collider,
+                                 int threads) {
   HandDraft draft;
   HandModel& hand = draft.hand;
   hand = hand_load::import_urdf(urdf_path, options);
@@ -740,6 +802,34 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     hand.soft_finger_radius_m = 0.005;
     guess("soft_finger_radius_m", "0.005", 0.6,
           "two fingers: point contacts are never force closure, 5 mm pads");
+  }
+  // Two digits (jaws, two-finger claws) close on their own line: no sideways place to choose.
+  const double width = make_collider && nf > 2 ? palm_width(hand) : 0.0;
+  if (width > 0.0) {
+    const double d = kGcpShiftRel * width;
+    const std::vector<Eigen::Vector3d> shifts = {
+        Eigen::Vector3d::Zero(), {d, 0, 0}, {-d, 0, 0}, {0, d, 0}, {0, -d, 0}};
+    const std::vector<int> found =
+        test_plan_gcp_places(hand, shifts, width, make_collider, threads);
+    // Another place replaces the drafted one only when it plans clearly more.
+    size_t best = size_t(std::max_element(found.begin(), found.end()) - found.begin());
+    if (found[best] < kMinGainRel * found[0] + kMinGainGrasps) best = 0;
+    hand.gcp.X_LG.translation() += hand.gcp.X_LG.linear() * shifts[best];
+    const char* const kPlaceNames[] = {"here", "+x", "-x", "+y", "-y"};
+    std::string counts;
+    for (size_t c = 0; c < found.size(); ++c)
+      counts += (c ? ", " : "") + (found[c] < 0 ? std::string("-") : std::to_string(found[c]));
+    const auto it =
+        std::find_if(draft.guesses.begin(), draft.guesses.end(),
+                     [](const DraftGuess& g) { return g.what == "gcp"; });  // made above
+    it->value = "'" + hand.links[palm].name + "' xyz " + vec(hand.gcp.X_LG.translation());
+    it->why += std::string("; ") +
+               (best == 0 ? std::string("kept")
+                          : "shifted " + num(d * 1000) + " mm along " + kPlaceNames[best]) +
+               " by test planning (spheres and cylinders 0.3-0.7 palm widths across, " +
+               std::to_string(kTestAttempts) +
+               " attempts each): force-closure grasps here, +x, -x, +y, -y: " + counts;
+    if (found[best] > found[0]) it->confidence = std::max(it->confidence, 0.6);
   }
   draft.problems = check_hand_conventions(hand);
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <initializer_list>
 #include <iostream>
@@ -23,12 +24,22 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Drafts a description for `urdf`, writes it to a temp file and loads it back.
+constexpr int kSphereAttempts = 100;
+constexpr int kThreads = 2;  // test planning's (the draft does not depend on them)
+constexpr double kGcpMovedAtLeast_m = 0.005;
+
+/// The collider `hand init` tests its GCP places with.
+std::unique_ptr<HandObjectCollider> make_collider(const HandModel& hand, const Mesh& object) {
+  return make_bullet_hand_collider(hand, object);
+}
+
+/// Drafts a description for `urdf` as `hand init` does (with test planning), writes it to a
+/// temp file and loads it back.
 HandModel draft_and_load(const std::string& urdf, const std::string& name, HandDraft* out) {
   const fs::path dir = fs::temp_directory_path() / "cordgrasp_draft_test";
   fs::create_directories(dir);
   const std::string path = (dir / (name + ".yaml")).string();
-  HandDraft draft = draft_hand_description(urdf, path);
+  HandDraft draft = draft_hand_description(urdf, path, {}, make_collider, kThreads);
   write_file_atomically(path, draft.yaml);
   HandModel hand = load_hand(path);
   if (out) *out = std::move(draft);
@@ -165,6 +176,48 @@ TEST(DraftHand, ShippedPrimitiveHandsDraftsPlan) {
     expect_palm_normal_near_shipped(shipped, hand);
     expect_plans_box_and_mug(hand);
   }
+}
+
+TEST(DraftHand, TestPlanningMovesAGcpThatPlansNothingToOneThatPlans) {
+  // Hand 3 of the seed-1 zoo (tools/make_hand_zoo.py, made here): a human layout with one-joint
+  // fingers of 4.5 cm whose fingertips meet 23 mm in front of a 7 x 8.5 cm palm. At the drafted
+  // place between the thumb tip and the fingertips its GCP plans no force-closure grasp of the
+  // shipped sphere in 100 attempts.
+  const fs::path zoo = fs::temp_directory_path() / "cordgrasp_draft_gcp_test";
+  fs::remove_all(zoo);
+  const std::string cmd = std::string(CORDGRASP_PYTHON) + " " + test::source_dir() +
+                          "/tools/make_hand_zoo.py --out " + zoo.string() +
+                          " --count 4 --seed 1 > /dev/null";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const std::string urdf = (zoo / "hand_03" / "hand_03.urdf").string();
+  const HandDraft plain = draft_hand_description(urdf, (zoo / "plain.yaml").string());
+  HandDraft tested;
+  const HandModel hand = draft_and_load(urdf, "hand_03_tested", &tested);
+  EXPECT_TRUE(tested.problems.empty());
+  // The description written holds the place chosen, and the guess says why.
+  EXPECT_TRUE(hand.gcp.X_LG.isApprox(tested.hand.gcp.X_LG, 1e-5));
+  const double moved_m =
+      (tested.hand.gcp.X_LG.translation() - plain.hand.gcp.X_LG.translation()).norm();
+  EXPECT_GT(moved_m, kGcpMovedAtLeast_m);
+  const auto gcp_guess = std::find_if(tested.guesses.begin(), tested.guesses.end(),
+                                      [](const DraftGuess& g) { return g.what == "gcp"; });
+  ASSERT_NE(gcp_guess, tested.guesses.end());
+  EXPECT_NE(gcp_guess->why.find("test planning"), std::string::npos) << gcp_guess->why;
+  // One thread drafts the same description.
+  EXPECT_EQ(draft_hand_description(urdf, (zoo / "one_thread.yaml").string(), {}, make_collider, 1)
+                .hand.gcp.X_LG.translation(),
+            tested.hand.gcp.X_LG.translation());
+
+  const Mesh sphere = load_mesh(test::source_dir() + "/assets/objects/sphere.obj");
+  auto plan_sphere = [&](const HandModel& h) {
+    auto collider = make_bullet_hand_collider(h, sphere);
+    PlanParams plan;
+    plan.max_attempts = kSphereAttempts;
+    plan.time_limit_s = 600.0;  // the attempt budget decides, not the machine's speed
+    return plan_cord_grasps(sphere, h, *collider, CordParams{}, plan).stats;
+  };
+  EXPECT_EQ(plan_sphere(plain.hand).force_closure, 0);
+  EXPECT_GT(plan_sphere(hand).force_closure, 0);
 }
 
 TEST(DraftHandDataset, EveryStagedHandDraftsAndPlans) {

@@ -1,13 +1,16 @@
 // `cordgrasp hand init`: drafts a hand description from a URDF (draft_hand_description) and
 // writes it. See docs/hand-description.md, "Drafting a description".
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <thread>
 
 #include "commands.h"
-#include "options.h"
+#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/atomic_file.h"
 #include "cordgrasp/core/draft_hand_description.h"
+#include "options.h"
 
 namespace cordgrasp::cli {
 namespace {
@@ -19,7 +22,14 @@ struct HandInitOptions {
 };
 
 void run_hand_init(const HandInitOptions& opt) {
-  const HandDraft draft = draft_hand_description(opt.urdf, opt.out, opt.hand_load);
+  std::fprintf(stderr, "hand init: drafting %s (test planning of the GCP's place: seconds)\n",
+               opt.urdf.c_str());
+  const auto make_collider = [](const HandModel& hand, const Mesh& object) {
+    return make_bullet_hand_collider(hand, object);
+  };
+  const int threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  const HandDraft draft =
+      draft_hand_description(opt.urdf, opt.out, opt.hand_load, make_collider, threads);
   write_file_atomically(opt.out, draft.yaml);
   std::printf("hand init: %s -> %s\n", opt.urdf.c_str(), opt.out.c_str());
   for (const DraftGuess& g : draft.guesses)
