@@ -1,11 +1,13 @@
 #include "cordgrasp/core/mesh_bvh.h"
 
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <limits>
 #include <stdexcept>
 #include <thread>
 
+#include "cordgrasp/core/parallel_for.h"
 #include "huge_pages.h"
 
 namespace cordgrasp {
@@ -18,16 +20,30 @@ struct Item {
   int id = 0;
 };
 
+/// Triangles above which the BVH of a large mesh is built on two threads: the root's two
+/// subtrees at once, and its per-triangle passes in two halves.
+constexpr int kParallelBuildTriangles = 100000;
+
+/// Calls fn(begin, end) over [0, n): in two halves on two threads when `threads` > 1 and n is
+/// large, else once on this thread.
+template <typename F>
+void in_halves(int n, int threads, F&& fn) {
+  if (threads > 1 && n > kParallelBuildTriangles)
+    parallel_for(2, 2, [&](int half) { half == 0 ? fn(0, n / 2) : fn(n / 2, n); });
+  else
+    fn(0, n);
+}
+
 struct Builder {
   const std::vector<Eigen::Vector3d>& vertices;
   const std::vector<Eigen::Vector3i>& triangles;
   int max_leaf;
   MeshBvhSplit split;
   std::vector<Item>& items;
-  std::vector<MeshBvh::Node>& nodes;  ///< this builder's subtree, from node index `base`
-  int base = 0;
+  MeshBvh::Node* nodes;  ///< the whole tree's nodes, sized beforehand
+  int next = 0;          ///< index of the next node this builder makes (preorder)
 
-  MeshBvh::Node& node(int index) { return nodes[size_t(index - base)]; }
+  MeshBvh::Node& node(int index) { return nodes[index]; }
 
   void bounds(int begin, int end, Eigen::Vector3d& lo, Eigen::Vector3d& hi) const {
     lo.setConstant(std::numeric_limits<double>::infinity());
@@ -41,12 +57,8 @@ struct Builder {
     }
   }
 
-  /// Centre, half size and bounding-sphere radius from the box (stored: the queries' hot path).
-  static void set_sphere(MeshBvh::Node& node) {
-    node.center = 0.5 * (node.lo + node.hi);
-    node.half = 0.5 * (node.hi - node.lo);
-    node.radius = node.half.norm();
-  }
+  /// The bounding-sphere radius from the box (stored: the region test's hot path).
+  static void set_sphere(MeshBvh::Node& node) { node.radius = node.half().norm(); }
 
   /// Orders items[begin, end) about their median along the longest centroid axis; returns the
   /// median's position, where the right child begins.
@@ -90,8 +102,7 @@ struct Builder {
 
   /// Builds the subtree of items[begin, end) in preorder (left child = own index + 1).
   int build(int begin, int end) {
-    const int index = base + int(nodes.size());
-    nodes.emplace_back();
+    const int index = next++;
     if (end - begin <= max_leaf) {
       Eigen::Vector3d lo, hi;
       bounds(begin, end, lo, hi);
@@ -117,9 +128,6 @@ int subtree_nodes(int n, int max_leaf) {
                        : 1 + subtree_nodes(n / 2, max_leaf) + subtree_nodes(n - n / 2, max_leaf);
 }
 
-/// Triangles above which build_bvh_nodes builds the root's two subtrees on two threads.
-constexpr int kParallelBuildTriangles = 100000;
-
 /// The BVH of `triangles` over `vertices` (bvh.vertices is set by the caller). With threads > 1
 /// a large set's two halves are built at once: the same nodes, in the same order.
 void build_bvh_nodes(const std::vector<Eigen::Vector3d>& vertices,
@@ -130,26 +138,26 @@ void build_bvh_nodes(const std::vector<Eigen::Vector3d>& vertices,
   std::vector<Item> items;
   detail::reserve_huge(items, size_t(n));
   items.resize(size_t(n));
-  for (int k = 0; k < n; ++k) {
-    const Eigen::Vector3i& t = triangles[size_t(k)];
-    const Eigen::Vector3d sum =
-        vertices[size_t(t[0])] + vertices[size_t(t[1])] + vertices[size_t(t[2])];
-    items[size_t(k)].key = split == MeshBvhSplit::kCornerSum ? sum : Eigen::Vector3d(sum / 3.0);
-    items[size_t(k)].id = k;
-  }
-  // Median splits leave at least ⌈max_leaf / 2⌉ triangles in a leaf (fewer only for a mesh
-  // that small): at most 2·leaves − 1 nodes, reserved at once (no regrowth copy).
-  const int min_leaf = std::max(1, (max_leaf_triangles + 1) / 2);
-  detail::reserve_huge(bvh.nodes, size_t(2 * (n / min_leaf + 1)));
-  Builder root{vertices, triangles, max_leaf_triangles, split, items, bvh.nodes};
+  in_halves(n, threads, [&](int begin, int end) {
+    for (int k = begin; k < end; ++k) {
+      const Eigen::Vector3i& t = triangles[size_t(k)];
+      const Eigen::Vector3d sum =
+          vertices[size_t(t[0])] + vertices[size_t(t[1])] + vertices[size_t(t[2])];
+      items[size_t(k)].key = split == MeshBvhSplit::kCornerSum ? sum : Eigen::Vector3d(sum / 3.0);
+      items[size_t(k)].id = k;
+    }
+  });
+  // The node count is known from n alone (median splits): sized at once, each subtree's
+  // builder writes its own index range.
+  detail::reserve_huge(bvh.nodes, size_t(subtree_nodes(n, max_leaf_triangles)));
+  bvh.nodes.resize(size_t(subtree_nodes(n, max_leaf_triangles)));
+  Builder root{vertices, triangles, max_leaf_triangles, split, items, bvh.nodes.data()};
   if (threads > 1 && n > kParallelBuildTriangles) {
-    bvh.nodes.emplace_back();
     const int mid = root.split_at_median(0, n);
     const int right_index = 1 + subtree_nodes(mid, max_leaf_triangles);
-    std::vector<MeshBvh::Node> right_nodes;
-    detail::reserve_huge(right_nodes, size_t(2 * ((n - mid) / min_leaf + 1)));
-    Builder left{vertices, triangles, max_leaf_triangles, split, items, bvh.nodes, 0};
-    Builder right{vertices, triangles, max_leaf_triangles, split, items, right_nodes, right_index};
+    Builder left{vertices, triangles, max_leaf_triangles, split, items, bvh.nodes.data(), 1};
+    Builder right{vertices, triangles,        max_leaf_triangles, split,
+                  items,    bvh.nodes.data(), right_index};
     std::exception_ptr failed;  // e.g. out of memory: thrown here, not std::terminate
     std::thread worker([&]() {  // items[mid, n) only
       try {
@@ -166,7 +174,6 @@ void build_bvh_nodes(const std::vector<Eigen::Vector3d>& vertices,
     }
     worker.join();
     if (failed) std::rethrow_exception(failed);
-    bvh.nodes.insert(bvh.nodes.end(), right_nodes.begin(), right_nodes.end());
     Builder::join(bvh.nodes[0], bvh.nodes[1], bvh.nodes[size_t(right_index)], right_index);
   } else {
     root.build(0, n);
@@ -175,11 +182,13 @@ void build_bvh_nodes(const std::vector<Eigen::Vector3d>& vertices,
   detail::reserve_huge(bvh.triangles, size_t(n));
   bvh.triangle_ids.resize(size_t(n));
   bvh.triangles.resize(size_t(n));
-  for (int k = 0; k < n; ++k) {
-    const int id = items[size_t(k)].id;
-    bvh.triangle_ids[size_t(k)] = id;
-    bvh.triangles[size_t(k)] = triangles[size_t(id)];
-  }
+  in_halves(n, threads, [&](int begin, int end) {
+    for (int k = begin; k < end; ++k) {
+      const int id = items[size_t(k)].id;
+      bvh.triangle_ids[size_t(k)] = id;
+      bvh.triangles[size_t(k)] = triangles[size_t(id)];
+    }
+  });
 }
 
 }  // namespace
@@ -193,24 +202,42 @@ MeshBvh build_mesh_bvh(const Mesh& mesh, int max_leaf_triangles, MeshBvhSplit sp
 }
 
 MeshBvh build_object_bvh(const Mesh& mesh, int threads) {
-  std::vector<Eigen::Vector3i> usable;  // triangles of non-zero area
-  detail::reserve_huge(usable, mesh.triangles.size());
-  std::vector<int> ids;  // usable triangle -> mesh triangle
-  detail::reserve_huge(ids, mesh.triangles.size());
-  for (size_t k = 0; k < mesh.triangles.size(); ++k) {
-    const Eigen::Vector3i& t = mesh.triangles[k];
-    const Eigen::Vector3d& a = mesh.vertices[static_cast<size_t>(t[0])];
-    const Eigen::Vector3d& b = mesh.vertices[static_cast<size_t>(t[1])];
-    const Eigen::Vector3d& c = mesh.vertices[static_cast<size_t>(t[2])];
-    if ((b - a).cross(c - a).squaredNorm() <= 0.0) continue;
-    usable.push_back(t);
-    ids.push_back(static_cast<int>(k));
+  const int nt = static_cast<int>(mesh.triangles.size());
+  std::vector<char> has_area(static_cast<size_t>(nt));
+  std::atomic<int> without_area{0};
+  in_halves(nt, threads, [&](int begin, int end) {
+    int zero = 0;
+    for (int k = begin; k < end; ++k) {
+      const Eigen::Vector3i& t = mesh.triangles[static_cast<size_t>(k)];
+      const Eigen::Vector3d& a = mesh.vertices[static_cast<size_t>(t[0])];
+      const Eigen::Vector3d& b = mesh.vertices[static_cast<size_t>(t[1])];
+      const Eigen::Vector3d& c = mesh.vertices[static_cast<size_t>(t[2])];
+      const bool area = (b - a).cross(c - a).squaredNorm() > 0.0;
+      has_area[static_cast<size_t>(k)] = area;
+      zero += area ? 0 : 1;
+    }
+    without_area += zero;
+  });
+  // Usually every triangle has an area (load_mesh drops those without): then the mesh's own
+  // list is used, not a copy.
+  std::vector<Eigen::Vector3i> usable;  // triangles of non-zero area, when some have none
+  std::vector<int> ids;                 // usable triangle -> mesh triangle
+  if (without_area > 0) {
+    detail::reserve_huge(usable, static_cast<size_t>(nt - without_area));
+    detail::reserve_huge(ids, static_cast<size_t>(nt - without_area));
+    for (int k = 0; k < nt; ++k)
+      if (has_area[static_cast<size_t>(k)]) {
+        usable.push_back(mesh.triangles[static_cast<size_t>(k)]);
+        ids.push_back(k);
+      }
   }
+  const std::vector<Eigen::Vector3i>& triangles = without_area > 0 ? usable : mesh.triangles;
   const int leaf =
-      static_cast<int>(usable.size()) > kLargeMeshTriangles ? kLargeMeshLeafTriangles : 4;
+      static_cast<int>(triangles.size()) > kLargeMeshTriangles ? kLargeMeshLeafTriangles : 4;
   MeshBvh bvh;
-  build_bvh_nodes(mesh.vertices, usable, leaf, MeshBvhSplit::kCornerSum, bvh, threads);
-  for (int& id : bvh.triangle_ids) id = ids[static_cast<size_t>(id)];
+  build_bvh_nodes(mesh.vertices, triangles, leaf, MeshBvhSplit::kCornerSum, bvh, threads);
+  if (without_area > 0)
+    for (int& id : bvh.triangle_ids) id = ids[static_cast<size_t>(id)];
   if (leaf == kLargeMeshLeafTriangles) {
     // A scan's vertices renumbered in first use along the leaves: a plane or segment query then
     // reads neighbouring memory, whatever order the file listed its vertices in.

@@ -8,6 +8,9 @@
 
 namespace cordgrasp::detail {
 
+/// Vertices ahead of the one welded whose weld slots are prefetched.
+constexpr int kWeldLookAhead = 8;
+
 MeshEdges build_mesh_edges(const Mesh& mesh) {
   MeshEdges out;
   const int nv = int(mesh.vertices.size());
@@ -22,6 +25,7 @@ MeshEdges build_mesh_edges(const Mesh& mesh) {
     WeldTable table{static_cast<size_t>(nv)};
     const auto point_of = [&](int i) -> const Eigen::Vector3d& { return mesh.vertices[size_t(i)]; };
     for (int i = 0; i < nv; ++i) {
+      if (i + kWeldLookAhead < nv) table.prefetch(mesh.vertices[size_t(i + kWeldLookAhead)]);
       if (!used[size_t(i)]) continue;
       const int same = table.find_or_insert(mesh.vertices[size_t(i)], i, point_of);
       out.weld[size_t(i)] = same >= 0 ? out.weld[size_t(same)] : out.welded_vertices++;

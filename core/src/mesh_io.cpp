@@ -13,12 +13,15 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <mutex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
 #include <vector>
 
 #include "cordgrasp/core/atomic_file.h"
@@ -52,6 +55,9 @@ namespace {
   throw InputError("load_mesh: '" + path + "': " + problem);
 }
 
+/// Faces ahead of the one welded whose new corners' weld slots are prefetched.
+constexpr unsigned kWeldLookAheadFaces = 8;
+
 /// Appends the triangles of `node` and its children, with node transforms applied (as RViz and
 /// ROS do). Vertices are welded on exact coordinates so that C is the mean of distinct points.
 /// Triangles with a NaN/inf corner are left out and counted.
@@ -82,6 +88,14 @@ struct SoupBuilder {
       // between faces, as PLY's does, then welds each vertex once, not once per face corner).
       std::vector<int> welded(am.mNumVertices, -1);
       for (unsigned f = 0; f < am.mNumFaces; ++f) {
+        if (f + kWeldLookAheadFaces < am.mNumFaces) {
+          const aiFace& ahead = am.mFaces[f + kWeldLookAheadFaces];
+          for (unsigned k = 0; k < ahead.mNumIndices && k < 3; ++k)
+            if (welded[ahead.mIndices[k]] < 0) {
+              const aiVector3D q = X * am.mVertices[ahead.mIndices[k]];
+              index_of.prefetch(Eigen::Vector3d(q.x, q.y, q.z));
+            }
+        }
         const aiFace& face = am.mFaces[f];
         if (face.mNumIndices != 3) continue;  // points and lines are not surface
         Eigen::Vector3d p[3];
@@ -196,8 +210,16 @@ bool geometry_in_one_file(const std::string& path) {
   return ext == ".obj" || ext == ".stl" || ext == ".ply" || ext == ".off";
 }
 
-Mesh load_mesh_file(const std::string& path, const MeshLoadOptions& options,
-                    MeshLoadReport* report) {
+/// Faces from which assimp's scene is freed on another thread (its faces are one allocation
+/// each: freeing a scan's millions of them takes a tenth of a second or more).
+constexpr size_t kReleaseSceneAsideFaces = 100000;
+
+/// With `release`, a large scene's freeing may still run in it when this returns (the caller
+/// waits for it after its own work, e.g. writing the cache entry); without, before it returns.
+Mesh load_mesh_file(const std::string& path, const MeshLoadOptions& options, MeshLoadReport* report,
+                    std::future<void>* release = nullptr) {
+  std::future<void> own_release;  // declared first: waited for on every way out
+  if (!release) release = &own_release;
   std::error_code ec;
   if (!fs::exists(path, ec)) fail(path, "file not found");
   if (fs::is_directory(path, ec)) fail(path, "is a directory, not a mesh file");
@@ -278,6 +300,16 @@ Mesh load_mesh_file(const std::string& path, const MeshLoadOptions& options,
     builder.index_of = detail::WeldTable(std::min(vertices, faces / 2 + 16));
   }
   builder.add_node(*scene, *scene->mRootNode, aiMatrix4x4());
+  if (builder.faces_seen >= int(kReleaseSceneAsideFaces)) {
+    std::unique_ptr<aiScene> read(importer.GetOrphanedScene());
+    scene = nullptr;
+    try {
+      *release =
+          std::async(std::launch::async, [read = std::move(read)]() mutable { read.reset(); });
+    } catch (const std::system_error&) {
+      // no thread to spare: the scene was freed here, with the task that could not start
+    }
+  }
   Mesh& mesh = builder.mesh;
   if (builder.non_finite_triangles > 0)
     fail(path, "NaN/inf vertex coordinate " + point_text(builder.first_non_finite) + " in " +
@@ -342,7 +374,7 @@ Mesh load_mesh_file(const std::string& path, const MeshLoadOptions& options,
   }
   mesh.name = fs::path(path).stem().string();
   if (report) *report = rep;
-  return mesh;
+  return std::move(mesh);  // the builder's, not a copy
 }
 
 }  // namespace
@@ -365,7 +397,8 @@ Mesh load_mesh(const std::string& path, const MeshLoadOptions& options, MeshLoad
       return std::move(*mesh);
     }
   }
-  Mesh mesh = load_mesh_file(path, options, &rep);
+  std::future<void> release;  // the scene freed while the entry is written
+  Mesh mesh = load_mesh_file(path, options, &rep, &release);
   if (!cached.empty()) detail::write_cached_mesh(cached, mesh, rep, options.cache_max_bytes);
   if (report) *report = rep;
   return mesh;

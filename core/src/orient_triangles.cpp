@@ -1,6 +1,5 @@
 #include "cordgrasp/core/orient_triangles.h"
 
-#include <deque>
 #include <utility>
 #include <vector>
 
@@ -18,18 +17,19 @@ OrientationFlips orientation_flips(const Mesh& mesh, const MeshEdges& me) {
   assign_huge(flip, size_t(nt), char(0));
   std::vector<int> patch;
   assign_huge(patch, size_t(nt), -1);
-  std::vector<std::vector<int>> members;
-  std::deque<int> queue;
+  // Breadth-first over each patch: `order` is the queue, and holds the triangles patch by
+  // patch in the order they were reached (patch p's are order[first[p]] ... order[first[p+1]−1]).
+  std::vector<int> order;
+  reserve_huge(order, size_t(nt));
+  std::vector<int> first;
   for (int seed = 0; seed < nt; ++seed) {
     if (patch[seed] >= 0) continue;
-    const int p = int(members.size());
-    members.emplace_back();
+    const int p = int(first.size());
+    first.push_back(int(order.size()));
     patch[seed] = p;
-    queue.push_back(seed);
-    while (!queue.empty()) {
-      const int t = queue.front();
-      queue.pop_front();
-      members[p].push_back(t);
+    order.push_back(seed);
+    for (size_t head = size_t(first.back()); head < order.size(); ++head) {
+      const int t = order[head];
       for (int s = 0; s < 3; ++s) {
         const int mine = 3 * t + s, other = me.twin[size_t(mine)];
         if (other < 0) continue;  // not an edge of exactly two sides
@@ -41,19 +41,22 @@ OrientationFlips orientation_flips(const Mesh& mesh, const MeshEdges& me) {
         if (patch[other_tri] < 0) {
           patch[other_tri] = p;
           flip[other_tri] = needed;
-          queue.push_back(other_tri);
+          order.push_back(other_tri);
         } else if (flip[other_tri] != needed) {
           out.orientable = false;
         }
       }
     }
   }
-  out.patches = int(members.size());
+  out.patches = int(first.size());
+  first.push_back(int(order.size()));
 
-  for (const auto& tris : members) {
+  for (int p = 0; p < out.patches; ++p) {
+    const size_t begin = size_t(first[size_t(p)]), end = size_t(first[size_t(p) + 1]);
     bool closed = true;
     int flips = 0;
-    for (int t : tris) {
+    for (size_t k = begin; k < end; ++k) {
+      const int t = order[k];
       flips += flip[t];
       for (int s = 0; s < 3; ++s) {
         const int other = me.twin[size_t(3 * t + s)];
@@ -64,9 +67,10 @@ OrientationFlips orientation_flips(const Mesh& mesh, const MeshEdges& me) {
     if (closed) {
       ++out.closed_patches;
       // Signed volume relative to a vertex of the patch: positive means outward.
-      const Eigen::Vector3d o = mesh.vertices[mesh.triangles[tris.front()][0]];
+      const Eigen::Vector3d o = mesh.vertices[mesh.triangles[order[begin]][0]];
       double six_volume = 0.0;
-      for (int t : tris) {
+      for (size_t k = begin; k < end; ++k) {
+        const int t = order[k];
         const auto& tri = mesh.triangles[t];
         const Eigen::Vector3d a = mesh.vertices[tri[0]] - o;
         Eigen::Vector3d b = mesh.vertices[tri[1]] - o, c = mesh.vertices[tri[2]] - o;
@@ -75,10 +79,10 @@ OrientationFlips orientation_flips(const Mesh& mesh, const MeshEdges& me) {
       }
       toggle = six_volume < 0.0;
     } else {
-      toggle = 2 * flips > int(tris.size());  // keep most triangles as authored
+      toggle = 2 * flips > int(end - begin);  // keep most triangles as authored
     }
     if (toggle)
-      for (int t : tris) flip[t] = !flip[t];
+      for (size_t k = begin; k < end; ++k) flip[order[k]] = !flip[order[k]];
   }
   return out;
 }

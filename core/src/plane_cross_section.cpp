@@ -46,8 +46,8 @@ void visit_straddling_triangles(const MeshBvh& bvh, const SlicePlane& f, const R
   while (top > 0) {
     const int index = stack[--top];
     const MeshBvh::Node& node = bvh.nodes[index];
-    const Eigen::Vector3d& c = node.center;
-    const double radius = anx * node.half.x() + any * node.half.y() + anz * node.half.z();
+    const Eigen::Vector3d c = node.center(), half = node.half();
+    const double radius = anx * half.x() + any * half.y() + anz * half.z();
     const double sc = f.distance(c);
     if (sc - radius > kBoxSlack_m || sc + radius < -kBoxSlack_m) continue;
     // The node's bounding sphere meets the plane inside a disk of at most its radius around

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "huge_pages.h"
+#include "prefetch.h"
 
 namespace cordgrasp::detail {
 
@@ -19,6 +20,12 @@ class WeldTable {
     std::size_t size = 16;
     while (size < 2 * expected) size *= 2;
     assign_huge(slots_, size, kEmpty);
+  }
+
+  /// Asks the processor to fetch p's first slot: a look-up a few points later then finds it in
+  /// cache (the table is larger than the cache for a mesh of millions of vertices).
+  void prefetch(const Eigen::Vector3d& p) const {
+    detail::prefetch(slots_.data() + (hash(p) & (slots_.size() - 1)));
   }
 
   /// The id of a stored point equal to p, or −1 after storing `new_id` for p.

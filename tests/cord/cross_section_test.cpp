@@ -110,7 +110,7 @@ TEST(MeshBvh, ObjectBvhDropsZeroAreaTrianglesAndIndexesTheMeshTriangles) {
 
 TEST(MeshBvh, ObjectBvhOfALargeScanHasAQuarterOfTheNodes) {
   // Above kLargeMeshTriangles the shared BVH keeps up to kLargeMeshLeafTriangles per leaf:
-  // its nodes (112 B each) are the bulk of a scan's memory. A 250 k-triangle grid sphere.
+  // its nodes (64 B each) are the bulk of a scan's memory. A 250 k-triangle grid sphere.
   const Mesh small = make_sphere_mesh(0.05, 50, 100);
   const Mesh large = make_sphere_mesh(0.05, 350, 360);
   ASSERT_LE(static_cast<int>(small.triangles.size()), kLargeMeshTriangles);
@@ -124,10 +124,7 @@ TEST(MeshBvh, ObjectBvhOfALargeScanHasAQuarterOfTheNodes) {
   EXPECT_EQ(l.triangles.size(), large.triangles.size());
 }
 
-TEST(MeshBvh, ObjectBvhOfALargeScanIsTheSameBuiltOnTwoThreads) {
-  const Mesh scan = make_sphere_mesh(0.05, 350, 360);
-  ASSERT_GT(static_cast<int>(scan.triangles.size()), kLargeMeshTriangles);
-  const MeshBvh one = build_object_bvh(scan, 1), two = build_object_bvh(scan, 2);
+void expect_same_bvh(const MeshBvh& one, const MeshBvh& two) {
   ASSERT_EQ(one.nodes.size(), two.nodes.size());
   for (size_t k = 0; k < one.nodes.size(); ++k) {
     ASSERT_EQ(one.nodes[k].lo, two.nodes[k].lo) << k;
@@ -139,6 +136,26 @@ TEST(MeshBvh, ObjectBvhOfALargeScanIsTheSameBuiltOnTwoThreads) {
   EXPECT_EQ(one.triangle_ids, two.triangle_ids);
   EXPECT_EQ(one.triangles, two.triangles);
   EXPECT_EQ(one.vertices, two.vertices);
+}
+
+TEST(MeshBvh, ObjectBvhOfALargeScanIsTheSameBuiltOnTwoThreads) {
+  const Mesh scan = make_sphere_mesh(0.05, 350, 360);
+  ASSERT_GT(static_cast<int>(scan.triangles.size()), kLargeMeshTriangles);
+  expect_same_bvh(build_object_bvh(scan, 1), build_object_bvh(scan, 2));
+  // With zero-area triangles in both halves of the triangle list (dropped, the rest indexed).
+  Mesh soup = scan;
+  const int half = static_cast<int>(soup.triangles.size()) / 2;
+  soup.triangles.insert(soup.triangles.begin() + half + 7, Eigen::Vector3i(4, 4, 5));
+  soup.triangles.insert(soup.triangles.begin() + 11, Eigen::Vector3i(1, 2, 2));
+  const MeshBvh one = build_object_bvh(soup, 1), two = build_object_bvh(soup, 2);
+  expect_same_bvh(one, two);
+  EXPECT_EQ(two.triangles.size(), scan.triangles.size());
+  for (size_t k = 0; k < two.triangles.size(); ++k)
+    for (int c = 0; c < 3; ++c)
+      ASSERT_EQ(two.vertices[static_cast<size_t>(two.triangles[k][c])],
+                soup.vertices[static_cast<size_t>(
+                    soup.triangles[static_cast<size_t>(two.triangle_ids[k])][c])])
+          << k;
 }
 
 TEST(MeshBvh, ObjectBvhOfALargeScanNumbersItsVerticesAlongTheLeaves) {

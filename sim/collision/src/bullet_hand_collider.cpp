@@ -129,8 +129,8 @@ class ObjectTriangles {
   /// shape computes its AABB: centre ± (half extent + margin)). Requires !empty().
   Aabb3 aabb(double margin_m) const {
     const MeshBvh::Node& root = bvh_->nodes.front();
-    const btVector3 center = to_bt(root.center);
-    const btVector3 half = to_bt(root.half) + btVector3(margin_m, margin_m, margin_m);
+    const btVector3 center = to_bt(root.center());
+    const btVector3 half = to_bt(root.half()) + btVector3(margin_m, margin_m, margin_m);
     return {center - half, center + half};
   }
 
@@ -155,8 +155,8 @@ class ObjectTriangles {
       if (node.lo.x() > qhi.x() || node.hi.x() < qlo.x() || node.lo.y() > qhi.y() ||
           node.hi.y() < qlo.y() || node.lo.z() > qhi.z() || node.hi.z() < qlo.z())
         continue;
-      const btVector3 c = X_CO * to_bt(node.center);
-      const btVector3 h = to_bt(node.half);
+      const btVector3 c = X_CO * to_bt(node.center());
+      const btVector3 h = to_bt(node.half());
       bool separated = false;
       for (int i = 0; i < 3 && !separated; ++i) {
         const double r = R_abs[i].dot(h);

@@ -10,14 +10,15 @@ namespace cordgrasp {
 /// §2.1) and to cast segments against it (docs/algorithm.md §2.2). Holds its own copy of the
 /// geometry.
 struct MeshBvh {
-  struct Node {
-    Eigen::Vector3d lo = Eigen::Vector3d::Zero();      ///< box min [m]
-    Eigen::Vector3d hi = Eigen::Vector3d::Zero();      ///< box max [m]
-    Eigen::Vector3d center = Eigen::Vector3d::Zero();  ///< (lo + hi) / 2 [m]
-    Eigen::Vector3d half = Eigen::Vector3d::Zero();    ///< (hi − lo) / 2 [m]
-    double radius = 0.0;                               ///< ‖half‖: bounding-sphere radius [m]
+  /// One cache line: a query reads one line per node it visits.
+  struct alignas(64) Node {
+    Eigen::Vector3d lo = Eigen::Vector3d::Zero();  ///< box min [m]
+    Eigen::Vector3d hi = Eigen::Vector3d::Zero();  ///< box max [m]
+    double radius = 0.0;                           ///< ‖half()‖: bounding-sphere radius [m]
     int first = 0;  ///< leaf: first index into `triangles`; inner node: index of right child
     int count = 0;  ///< leaf: number of triangles; 0 marks an inner node (left child = own + 1)
+    Eigen::Vector3d center() const { return 0.5 * (lo + hi); }  ///< [m]
+    Eigen::Vector3d half() const { return 0.5 * (hi - lo); }    ///< [m]
   };
   std::vector<Node> nodes;                 ///< nodes[0] is the root; empty for an empty mesh
   /// Mesh::vertices, same indices; build_object_bvh of a large mesh: the used ones, numbered
