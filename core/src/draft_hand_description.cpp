@@ -44,6 +44,9 @@ constexpr double kOpposingCosine = 0.5;
 constexpr double kSameAxisCosine = 0.7;
 /// A joint axis counts as across its finger when |axis × extension| is at least this.
 constexpr double kMinAcross = 0.7;
+/// Fingers with two-sided limits flex towards the thumb's side of the palm when the thumb tip
+/// lies at least this far off the palm's centre across the fingers' joint axes [m].
+constexpr double kMinThumbSide_m = 0.005;
 /// The thumb by position is ambiguous below this confidence; then the digit whose closing
 /// motion is the most against the others' is the thumb, when it is so by this much more
 /// (difference of cosines) than the thumb by position.
@@ -523,6 +526,41 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   double confidence_normal = flexion.norm() > 1e-9 ? normal_W.norm() / flexion.norm() : 0.0;
   std::string normal_why = "flexion of the fingers with one-sided joint limits";
   bool from_flexion = true;
+  if (normal_W.norm() < 1e-6 && nf > 2) {
+    // No one-sided limits (every finger joint ±90°, say): the fingers still flex across their
+    // joint axes, and towards the side of the palm the thumb stands on (a thumb opposes from
+    // the palm's front).
+    Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+    int across_joints = 0;
+    bool revolute = true;
+    for (size_t i = 0; i < nf; ++i) {
+      if (int(i) == thumb) continue;
+      const Eigen::Vector3d e = finger_extension(i);
+      for (int j : fingers[i].joints) {
+        if (hand.joints[j].type != JointType::kRevolute) {
+          revolute = false;
+          continue;
+        }
+        Eigen::Vector3d across = axis_W(j).cross(e);
+        if (across.norm() < kMinAcross) continue;
+        across.normalize();
+        axis += across.dot(axis) >= 0.0 ? across : Eigen::Vector3d(-across);
+        ++across_joints;
+      }
+    }
+    axis -= axis.dot(extension) * extension;
+    const double thumb_side_m =
+        axis.norm() > 1e-9 ? (tips[thumb] - palm_c).dot(axis.normalized()) : 0.0;
+    if (revolute && across_joints > 0 && axis.norm() >= kSameAxisCosine * across_joints &&
+        std::abs(thumb_side_m) >= kMinThumbSide_m) {
+      normal_W = (thumb_side_m > 0.0 ? 1.0 : -1.0) * axis.normalized();
+      confidence_normal = 0.5;
+      normal_why =
+          "no one-sided joint limits: across the fingers' joint axes, towards the "
+          "thumb's side of the palm (its tip " +
+          num(std::round(std::abs(thumb_side_m) * 1000)) + " mm off the palm's centre)";
+    }
+  }
   if (normal_W.norm() < 1e-6) {
     // Parallel jaws: the palm faces where the fingers point: from the palm's centroid to the
     // fingers' geometry centroid, without the jaw-to-jaw component.

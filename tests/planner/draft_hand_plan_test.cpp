@@ -178,6 +178,32 @@ TEST(DraftHand, ShippedPrimitiveHandsDraftsPlan) {
   }
 }
 
+TEST(DraftHand, FingersWithTwoSidedLimitsFlexTowardsTheThumbsSideAndPlan) {
+  // Hand 6 of the seed-1 zoo (tools/make_hand_zoo.py, made here): a human layout whose two
+  // fingers' joints all have limits of ±90°, so no limit tells which way they flex. They flex
+  // towards +x of their own frames (the zoo's convention: positive about +y), the side of the
+  // palm the thumb stands on.
+  const fs::path zoo = fs::temp_directory_path() / "cordgrasp_draft_two_sided_test";
+  fs::remove_all(zoo);
+  const std::string cmd = std::string(CORDGRASP_PYTHON) + " " + test::source_dir() +
+                          "/tools/make_hand_zoo.py --out " + zoo.string() +
+                          " --count 7 --seed 1 > /dev/null";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const std::string urdf = (zoo / "hand_06" / "hand_06.urdf").string();
+  const HandDraft draft = draft_hand_description(urdf, (zoo / "hand_06.yaml").string());
+  EXPECT_TRUE(draft.problems.empty()) << draft.problems.front();
+  const std::set<std::string> closing = actor_joints(draft.hand);
+  for (const char* joint : {"f0_j0 +", "f1_j0 +", "f1_j1 +"})
+    EXPECT_TRUE(closing.count(joint)) << joint;
+  const auto normal_guess =
+      std::find_if(draft.guesses.begin(), draft.guesses.end(),
+                   [](const DraftGuess& g) { return g.what == "palm normal"; });
+  ASSERT_NE(normal_guess, draft.guesses.end());
+  EXPECT_NE(normal_guess->why.find("thumb's side"), std::string::npos) << normal_guess->why;
+  write_file_atomically((zoo / "hand_06.yaml").string(), draft.yaml);
+  expect_plans(load_hand((zoo / "hand_06.yaml").string()), {"sphere"});
+}
+
 TEST(DraftHand, TestPlanningMovesAGcpThatPlansNothingToOneThatPlans) {
   // Hand 3 of the seed-1 zoo (tools/make_hand_zoo.py, made here): a human layout with one-joint
   // fingers of 4.5 cm whose fingertips meet 23 mm in front of a 7 x 8.5 cm palm. At the drafted
