@@ -103,6 +103,17 @@ void expect_palm_normal_near_shipped(const HandModel& shipped, const HandModel& 
       << shipped.palm_normal->n_L.transpose();
 }
 
+/// The first `count` hands of the zoo of `seed` (tools/make_hand_zoo.py) made afresh in `folder`.
+::testing::AssertionResult make_zoo(const fs::path& folder, int count, int seed) {
+  fs::remove_all(folder);
+  const std::string cmd = std::string(CORDGRASP_PYTHON) + " " + test::source_dir() +
+                          "/tools/make_hand_zoo.py --out " + folder.string() + " --count " +
+                          std::to_string(count) + " --seed " + std::to_string(seed) +
+                          " > /dev/null";
+  if (std::system(cmd.c_str()) != 0) return ::testing::AssertionFailure() << cmd;
+  return ::testing::AssertionSuccess();
+}
+
 TEST(DraftHand, NeverSeenThreeDigitClawLoadsFollowsTheConventionsAndPlans) {
   HandDraft draft;
   const HandModel hand = draft_and_load(
@@ -184,11 +195,7 @@ TEST(DraftHand, FingersWithTwoSidedLimitsFlexTowardsTheThumbsSideAndPlan) {
   // towards +x of their own frames (the zoo's convention: positive about +y), the side of the
   // palm the thumb stands on.
   const fs::path zoo = fs::temp_directory_path() / "cordgrasp_draft_two_sided_test";
-  fs::remove_all(zoo);
-  const std::string cmd = std::string(CORDGRASP_PYTHON) + " " + test::source_dir() +
-                          "/tools/make_hand_zoo.py --out " + zoo.string() +
-                          " --count 7 --seed 1 > /dev/null";
-  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  ASSERT_TRUE(make_zoo(zoo, 7, 1));
   const std::string urdf = (zoo / "hand_06" / "hand_06.urdf").string();
   const HandDraft draft = draft_hand_description(urdf, (zoo / "hand_06.yaml").string());
   EXPECT_TRUE(draft.problems.empty()) << draft.problems.front();
@@ -210,11 +217,7 @@ TEST(DraftHand, TestPlanningMovesAGcpThatPlansNothingToOneThatPlans) {
   // place between the thumb tip and the fingertips its GCP plans no force-closure grasp of the
   // shipped sphere in 100 attempts.
   const fs::path zoo = fs::temp_directory_path() / "cordgrasp_draft_gcp_test";
-  fs::remove_all(zoo);
-  const std::string cmd = std::string(CORDGRASP_PYTHON) + " " + test::source_dir() +
-                          "/tools/make_hand_zoo.py --out " + zoo.string() +
-                          " --count 4 --seed 1 > /dev/null";
-  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  ASSERT_TRUE(make_zoo(zoo, 4, 1));
   const std::string urdf = (zoo / "hand_03" / "hand_03.urdf").string();
   const HandDraft plain = draft_hand_description(urdf, (zoo / "plain.yaml").string());
   HandDraft tested;
