@@ -212,7 +212,7 @@ MeshBvh build_object_bvh(const Mesh& mesh, int threads) {
       const Eigen::Vector3d& a = mesh.vertices[static_cast<size_t>(t[0])];
       const Eigen::Vector3d& b = mesh.vertices[static_cast<size_t>(t[1])];
       const Eigen::Vector3d& c = mesh.vertices[static_cast<size_t>(t[2])];
-      const bool area = (b - a).cross(c - a).squaredNorm() > 0.0;
+      const bool area = !((b - a).cross(c - a).squaredNorm() <= 0.0);  // NaN: kept, as before
       has_area[static_cast<size_t>(k)] = area;
       zero += area ? 0 : 1;
     }
