@@ -86,6 +86,9 @@ std::string num(double v) {
   return s.str();
 }
 
+/// A length in metres written in millimetres to 0.1 mm.
+std::string mm(double v_m) { return num(std::round(v_m * 1e4) / 10.0) + " mm"; }
+
 std::string vec(const Eigen::Vector3d& v) {
   return "[" + num(v.x()) + ", " + num(v.y()) + ", " + num(v.z()) + "]";
 }
@@ -293,10 +296,11 @@ std::vector<int> test_plan_gcp_places(const HandModel& hand,
         found[s][c] = plan_cord_grasps(shapes[s], places[c], *collider, CordParams{}, params)
                           .stats.force_closure;
   });
-  std::vector<int> total(places.size(), 0);
+  std::vector<int> total(places.size(), -1);  // -1: a place not tried
   for (size_t c = 0; c < places.size(); ++c) {
-    if (!tried[c]) total[c] = -1;
-    for (const auto& per_shape : found) total[c] += tried[c] ? per_shape[c] : 0;
+    if (!tried[c]) continue;
+    total[c] = 0;
+    for (const auto& per_shape : found) total[c] += per_shape[c];
   }
   return total;
 }
@@ -822,8 +826,8 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   }
   guess("gcp", "'" + hand.links[palm].name + "' xyz " + vec(hand.gcp.X_LG.translation()),
         best_problems == 0 ? 0.7 : 0.3,
-        "between thumb tip and fingertips, " + num((best_h - palm_top) * 1000) +
-            " mm from the front of the palm's bounds along the palm normal");
+        "between thumb tip and fingertips, " + mm(best_h - palm_top) +
+            " from the front of the palm's bounds along the palm normal");
   {
     int nonzero = 0;
     for (Eigen::Index j = 0; j < q_open.size(); ++j) nonzero += q_open[j] != 0.0;
@@ -861,12 +865,12 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
         std::find_if(draft.guesses.begin(), draft.guesses.end(),
                      [](const DraftGuess& g) { return g.what == "gcp"; });  // made above
     it->value = "'" + hand.links[palm].name + "' xyz " + vec(hand.gcp.X_LG.translation());
-    it->why += std::string("; ") +
-               (best == 0 ? std::string("kept")
-                          : "shifted " + num(d * 1000) + " mm along " + kPlaceNames[best]) +
-               " by test planning (spheres and cylinders 0.3-0.7 palm widths across, " +
-               std::to_string(kTestAttempts) +
-               " attempts each): force-closure grasps here, +x, -x, +y, -y: " + counts;
+    it->why +=
+        std::string("; ") +
+        (best == 0 ? std::string("kept") : "shifted " + mm(d) + " along " + kPlaceNames[best]) +
+        " by test planning (spheres and cylinders 0.3-0.7 palm widths across, " +
+        std::to_string(kTestAttempts) +
+        " attempts each): force-closure grasps here, +x, -x, +y, -y: " + counts;
     if (found[best] > found[0]) it->confidence = std::max(it->confidence, 0.6);
   }
   draft.problems = check_hand_conventions(hand);

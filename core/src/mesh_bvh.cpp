@@ -5,7 +5,6 @@
 #include <exception>
 #include <limits>
 #include <stdexcept>
-#include <thread>
 
 #include "cordgrasp/core/parallel_for.h"
 #include "huge_pages.h"
@@ -158,22 +157,8 @@ void build_bvh_nodes(const std::vector<Eigen::Vector3d>& vertices,
     Builder left{vertices, triangles, max_leaf_triangles, split, items, bvh.nodes.data(), 1};
     Builder right{vertices, triangles,        max_leaf_triangles, split,
                   items,    bvh.nodes.data(), right_index};
-    std::exception_ptr failed;  // e.g. out of memory: thrown here, not std::terminate
-    std::thread worker([&]() {  // items[mid, n) only
-      try {
-        right.build(mid, n);
-      } catch (...) {
-        failed = std::current_exception();
-      }
-    });
-    try {
-      left.build(0, mid);
-    } catch (...) {
-      worker.join();
-      throw;
-    }
-    worker.join();
-    if (failed) std::rethrow_exception(failed);
+    // The first exception (e.g. out of memory) is rethrown here after both halves end.
+    parallel_for(2, 2, [&](int half) { half == 0 ? left.build(0, mid) : right.build(mid, n); });
     Builder::join(bvh.nodes[0], bvh.nodes[1], bvh.nodes[size_t(right_index)], right_index);
   } else {
     root.build(0, n);

@@ -8,9 +8,6 @@
 
 namespace cordgrasp::detail {
 
-/// Vertices ahead of the one welded whose weld slots are prefetched.
-constexpr int kWeldLookAhead = 8;
-
 MeshEdges build_mesh_edges(const Mesh& mesh) {
   MeshEdges out;
   const int nv = int(mesh.vertices.size());

@@ -55,9 +55,6 @@ namespace {
   throw InputError("load_mesh: '" + path + "': " + problem);
 }
 
-/// Faces ahead of the one welded whose new corners' weld slots are prefetched.
-constexpr unsigned kWeldLookAheadFaces = 8;
-
 /// Appends the triangles of `node` and its children, with node transforms applied (as RViz and
 /// ROS do). Vertices are welded on exact coordinates so that C is the mean of distinct points.
 /// Triangles with a NaN/inf corner are left out and counted.
@@ -88,8 +85,8 @@ struct SoupBuilder {
       // between faces, as PLY's does, then welds each vertex once, not once per face corner).
       std::vector<int> welded(am.mNumVertices, -1);
       for (unsigned f = 0; f < am.mNumFaces; ++f) {
-        if (f + kWeldLookAheadFaces < am.mNumFaces) {
-          const aiFace& ahead = am.mFaces[f + kWeldLookAheadFaces];
+        if (f + unsigned(detail::kWeldLookAhead) < am.mNumFaces) {
+          const aiFace& ahead = am.mFaces[f + unsigned(detail::kWeldLookAhead)];
           for (unsigned k = 0; k < ahead.mNumIndices && k < 3; ++k)
             if (welded[ahead.mIndices[k]] < 0) {
               const aiVector3D q = X * am.mVertices[ahead.mIndices[k]];

@@ -11,6 +11,10 @@
 
 namespace cordgrasp::detail {
 
+/// How many points ahead a weld prefetches its table slot (WeldTable::prefetch): far enough
+/// for the fetch to arrive, near enough to stay in cache.
+inline constexpr int kWeldLookAhead = 8;
+
 /// Set of point ids keyed by their exact coordinates (−0.0 equals +0.0, as `==` says). The table
 /// holds ids only; `point_of(id)` gives an id's point. Ids are the caller's (any int ≥ 0).
 class WeldTable {
