@@ -92,9 +92,15 @@ HoldVerdict hold_verdict(const ProportionInterval& interval, double threshold) {
 
 bool stop_drawing(int held, int draws, const HoldProbabilityParams& params) {
   if (draws >= params.max_draws) return true;
-  if (draws < params.min_draws) return false;
-  return hold_verdict(wilson_interval(held, draws), params.min_hold_probability) !=
-         HoldVerdict::kUndecided;
+  const double threshold = params.min_hold_probability;
+  const HoldVerdict now = hold_verdict(wilson_interval(held, draws), threshold);
+  if (now == HoldVerdict::kUndecided) return false;
+  if (draws >= params.min_draws) return true;
+  // Before the minimum: stop when the draws left to it cannot change the verdict there (all
+  // of them held, or none), so the test ends as it would at the minimum, sooner.
+  const int left = params.min_draws - draws;
+  return hold_verdict(wilson_interval(held + left, params.min_draws), threshold) == now &&
+         hold_verdict(wilson_interval(held, params.min_draws), threshold) == now;
 }
 
 FailureSensitivity failure_sensitivity(const std::vector<UncertainDrawResult>& draws,

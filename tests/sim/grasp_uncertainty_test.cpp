@@ -3,14 +3,16 @@
 // rigidly and changes μ, mass, centre of mass and grip force; the sequential test stops where
 // the Wilson interval is decided; a rim pinch of the parallel gripper is less likely to hold a
 // box than a pinch at its middle.
+#include "cordgrasp/sim/grasp_uncertainty.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/shapes.h"
-#include "cordgrasp/sim/grasp_uncertainty.h"
 #include "cordgrasp/sim/hold_probability.h"
 #include "cordgrasp/sim/validate_grasp.h"
 #include "sim_test_util.h"
@@ -182,9 +184,13 @@ TEST(CheckUncertaintyParams, NamesTheFieldOutOfRange) {
   EXPECT_THROW(check_uncertainty_params(u), std::invalid_argument);
 }
 
-TEST(StopDrawing, StopsOnceTheIntervalIsDecidedAndNotBeforeTheMinimum) {
+TEST(StopDrawing, StopsOnceTheIntervalIsDecidedAndBeforeTheMinimumOnlyWhereItsVerdictIsSure) {
   HoldProbabilityParams p;  // threshold 0.8, 5 to 20 draws
-  EXPECT_FALSE(stop_drawing(0, 4, p));   // below the minimum
+  EXPECT_FALSE(stop_drawing(0, 2, p));   // [0, 0.66] but 3 of 5 is undecided
+  EXPECT_TRUE(stop_drawing(0, 3, p));    // at most 2 of 5: below
+  EXPECT_FALSE(stop_drawing(1, 3, p));   // 3 of 5 is undecided
+  EXPECT_TRUE(stop_drawing(1, 4, p));    // at most 2 of 5
+  EXPECT_FALSE(stop_drawing(2, 4, p));   // [0.15, 0.85]: undecided
   EXPECT_TRUE(stop_drawing(0, 5, p));    // [0, 0.43]: below
   EXPECT_TRUE(stop_drawing(2, 5, p));    // [0.12, 0.77]: below
   EXPECT_FALSE(stop_drawing(5, 5, p));   // [0.57, 1]: undecided
@@ -194,6 +200,37 @@ TEST(StopDrawing, StopsOnceTheIntervalIsDecidedAndNotBeforeTheMinimum) {
   EXPECT_EQ(hold_verdict(wilson_interval(16, 16), 0.8), HoldVerdict::kAbove);
   EXPECT_EQ(hold_verdict(wilson_interval(2, 5), 0.8), HoldVerdict::kBelow);
   EXPECT_EQ(hold_verdict(wilson_interval(17, 20), 0.8), HoldVerdict::kUndecided);
+}
+
+TEST(StopDrawing, EndsEverySequenceWithTheVerdictOfATestThatLooksFirstAtTheMinimum) {
+  // Every held / failed sequence of up to 10 draws, at three thresholds: the test that may stop
+  // before min_draws ends with the verdict of one that never does, never later than it.
+  for (const double threshold : {0.5, 0.8, 0.9}) {
+    HoldProbabilityParams p;
+    p.min_hold_probability = threshold;
+    p.min_draws = 5;
+    p.max_draws = 10;
+    for (unsigned bits = 0; bits < (1u << p.max_draws); ++bits) {
+      const auto run = [&](bool early) {
+        int held = 0, draws = 0;
+        while (true) {
+          const bool stop = early ? stop_drawing(held, draws, p)
+                                  : draws >= p.max_draws ||
+                                        (draws >= p.min_draws &&
+                                         hold_verdict(wilson_interval(held, draws), threshold) !=
+                                             HoldVerdict::kUndecided);
+          if (stop) break;
+          held += (bits >> draws) & 1u;
+          ++draws;
+        }
+        return std::make_pair(hold_verdict(wilson_interval(held, draws), threshold), draws);
+      };
+      const auto [verdict, draws] = run(true);
+      const auto [verdict_at_minimum, draws_at_minimum] = run(false);
+      ASSERT_EQ(verdict, verdict_at_minimum) << "threshold " << threshold << ", draws " << bits;
+      ASSERT_LE(draws, draws_at_minimum);
+    }
+  }
 }
 
 TEST(ConfirmationTest, KeepsTheTestAndDrawsOtherConditions) {

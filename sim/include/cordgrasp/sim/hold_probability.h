@@ -23,7 +23,7 @@ namespace cordgrasp {
 struct HoldProbabilityParams {
   double min_hold_probability = 0.8;  ///< acceptance threshold on P(held) [-]
   int max_draws = 20;                 ///< draws per grasp at most (CLI --trials)
-  int min_draws = 5;                  ///< draws before the test may stop
+  int min_draws = 5;                  ///< the test's first look (sooner where its verdict is sure)
   std::uint64_t seed = 1;             ///< seed of the draws (draw_uncertainty)
 
   /// Visits every field in declaration order (core/serialize.h).
@@ -65,7 +65,10 @@ const char* to_string(HoldVerdict verdict);
 HoldVerdict hold_verdict(const ProportionInterval& interval, double threshold);
 
 /// Whether the sequential test stops after `held` of `draws`: at max_draws, or from min_draws
-/// on once the Wilson 95 % interval is decided.
+/// on once the Wilson 95 % interval is decided; before min_draws, once it is decided and the
+/// draws left to min_draws cannot change that verdict (the test then ends as it would at
+/// min_draws, with fewer draws: e.g. 1 held of 4 at threshold 0.8, where a fifth draw leaves
+/// at most 2 of 5, below).
 bool stop_drawing(int held, int draws, const HoldProbabilityParams& params);
 
 /// One uncertain trial and how it ended.
