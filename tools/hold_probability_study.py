@@ -34,7 +34,8 @@ interval is a percentile bootstrap that resamples (hand, object) groups, since g
 object are not independent.
 
 Labels: harsh_label = the grasp held in >= 50 % of its harsher draws (the sequential test at
-0.5 stops once the Wilson 95 % interval excludes 0.5, from 5 draws on, else after HARSH_DRAWS);
+0.5 stops once the Wilson 95 % interval excludes 0.5, from 5 draws on or sooner where a fifth
+cannot change that, else after HARSH_DRAWS);
 mujoco_label = MuJoCo's verdict (held) on the grasp as planned.
 Predictors: p_held (P(held), realistic, seed 1), eps (plan.json epsilon), nudged2of3 (held in
 >= 2 of the 3 nudged trials, a 0/1 score), nudged_count (held of 3 as the score), as_planned
