@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <exception>
 #include <limits>
 #include <stdexcept>
 
@@ -148,8 +147,9 @@ void build_bvh_nodes(const std::vector<Eigen::Vector3d>& vertices,
   });
   // The node count is known from n alone (median splits): sized at once, each subtree's
   // builder writes its own index range.
-  detail::reserve_huge(bvh.nodes, size_t(subtree_nodes(n, max_leaf_triangles)));
-  bvh.nodes.resize(size_t(subtree_nodes(n, max_leaf_triangles)));
+  const size_t node_count = size_t(subtree_nodes(n, max_leaf_triangles));
+  detail::reserve_huge(bvh.nodes, node_count);
+  bvh.nodes.resize(node_count);
   Builder root{vertices, triangles, max_leaf_triangles, split, items, bvh.nodes.data()};
   if (threads > 1 && n > kParallelBuildTriangles) {
     const int mid = root.split_at_median(0, n);
