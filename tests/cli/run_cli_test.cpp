@@ -6,7 +6,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
+#include "cordgrasp/jobs/run_job.h"
 #include "cordgrasp/render/animation.h"
 #include "test_files.h"
 #include "test_paths.h"
@@ -55,6 +57,15 @@ TEST(CliRun, DefaultsWritePlanSimReportAndPictures) {
               std::string::npos);
   }
   EXPECT_NE(report.find("| 0 |"), std::string::npos) << report;
+  // Each grasp's P(held) under the realistic model, a preview of a few draws.
+  EXPECT_EQ(sim.at("parameters").at("uncertainty").at("mu_relative_spread"), 0.2);
+  for (size_t k = 0; k < n; ++k) {
+    const nlohmann::json& h = sim.at("grasps").at(k).at("hold_probability");
+    EXPECT_GE(h.at("draws").get<int>(), 1) << k;
+    EXPECT_LE(h.at("draws").get<int>(), RunParams{}.hold_preview_draws) << k;
+    EXPECT_LE(h.at("low").get<double>(), h.at("p").get<double>()) << k;
+  }
+  EXPECT_NE(report.find("P(held) [95 %]"), std::string::npos) << report;
   // report.html beside it, with each grasp's picture and 3D model (tests/browser opens one).
   const std::string html = read_text(dir.file("report.html"));
   for (size_t k = 0; k < n; ++k) {
@@ -86,6 +97,33 @@ TEST(CliRun, DefaultsWritePlanSimReportAndPictures) {
               sim["grasps"][k]["phases"].back()["translation_m"])
         << k;
   }
+}
+
+TEST(CliRun, HoldProbabilityPreviewIsTheSameBesideThePicturesAsAfterThem) {
+  // With two threads the draws run beside the pictures, with one after them.
+  TempDir dir;
+  std::vector<nlohmann::json> previews;
+  for (const char* jobs : {"1", "2"}) {
+    const std::string out = dir.file(std::string("jobs") + jobs);
+    const auto r = run_cordgrasp(
+        "run --hand parallel_gripper --object box --grasps 2 "
+        "--no-validate --quiet --jobs " +
+        std::string(jobs) + " --out-dir " + quoted(out));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    nlohmann::json grasps = read_json(out + "/sim.json").at("grasps");
+    ASSERT_EQ(grasps.size(), 2u) << jobs;
+    nlohmann::json hs;
+    for (const auto& g : grasps) {
+      nlohmann::json h = g.at("hold_probability");
+      for (auto& d : h.at("draw_results")) d.erase("cpu_s"), d.erase("wall_time_s");
+      h.erase("cpu_s");
+      h.erase("wall_time_s");
+      hs.push_back(h);
+    }
+    previews.push_back(hs);
+    EXPECT_TRUE(fs::exists(fs::path(out) / "grasps.png")) << jobs;
+  }
+  EXPECT_EQ(previews[0], previews[1]);
 }
 
 TEST(CliRun, ValidatesByDefault) {

@@ -1,8 +1,10 @@
 // `cordgrasp run`: the main job — plan → validate (Bullet) → render, with report.md and .html.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <thread>
 
 #include "commands.h"
 #include "cordgrasp/core/error.h"
@@ -27,6 +29,7 @@ void add_run_command(CLI::App& app) {
   opt->run.object = default_object_name();
   opt->run.job.plan.grasps = 3;
   opt->run.picture.size = "800x600";
+  opt->run.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   CLI::App* cmd = app.add_subcommand(
       "run", "The main job: plan grasps, check them in Bullet (lift, shake), render them, and "
              "write plan.json, sim.json, PNGs, report.md and report.html");
@@ -47,7 +50,7 @@ void add_run_command(CLI::App& app) {
   cmd->add_option(
          "--jobs,-j", opt->run.jobs,
          "Threads: a scan's set-up, the cord exploration's scans, and grasps simulated at once "
-         "(one physics world each); results do not depend on it")
+         "(one physics world each); results do not depend on it (default: the machine's cores)")
       ->check(whole_number_in(1, 256))
       ->capture_default_str();
   cmd->add_flag("--no-validate", opt->no_validate,

@@ -2,8 +2,12 @@
 
 #include <chrono>
 #include <filesystem>
+#include <future>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "cordgrasp/core/assets.h"
 #include "cordgrasp/core/atomic_file.h"
@@ -13,8 +17,8 @@
 #include "cordgrasp/core/object_meshes.h"
 #include "cordgrasp/jobs/hand_scene.h"
 #include "cordgrasp/jobs/physics_animation.h"
-#include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/physics_settings.h"
+#include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/report_viewer.h"
 #include "cordgrasp/jobs/run_report_html.h"
 #include "cordgrasp/jobs/text_format.h"
@@ -116,13 +120,11 @@ void require_grasps(const RunInputs& in, const RunReport& report) {
                      in.plan_path + " and " + in.report_path);
 }
 
-/// 2. Physics of the plan as written (poses as quaternions, so that `cordgrasp validate
-/// --plan plan.json` reproduces these outcomes exactly); writes sim.json and keeps the
-/// samples for the pictures in `samples`.
-SimDocument physics_stage(const RunParams& opt, const RunInputs& in, const RunProgress& progress,
-                          GraspSamples* samples, RunReport* report) {
-  const PlanDocument written = plan_from_json(read_plan_json(in.plan_path), in.hand,
-                                              in.plan_path);
+/// 2. Physics of the plan as written (`written`: plan.json read back, poses as quaternions,
+/// so that `cordgrasp validate --plan` reproduces these outcomes exactly); keeps the samples
+/// for the pictures in `samples`.
+SimDocument physics_stage(const RunParams& opt, const RunInputs& in, const PlanDocument& written,
+                          const RunProgress& progress, GraspSamples* samples, RunReport* report) {
   PhysicsChoice choice;
   choice.protocol = opt.protocol;
   choice.overrides = opt.validation.physics;
@@ -145,27 +147,39 @@ SimDocument physics_stage(const RunParams& opt, const RunInputs& in, const RunPr
                  sim_result_line(r));
       },
       hooks, opt.jobs, opt.cancel);
-  if (!is_none(opt.validation.uncertainty)) {
-    // P(held) again, with each grasp's own draws (by its index in the plan: not those that
-    // accepted it), so the report's interval is an independent check.
-    HoldProbabilityParams test;
-    test.min_hold_probability = opt.validation.min_hold_probability;
-    test.max_draws = opt.validation.max_draws;
-    test.min_draws = std::min(test.min_draws, test.max_draws);
-    test.seed = opt.validation.trial_seed;
-    add_hold_probabilities(
-        sim, written, in.hand, *in.mesh, opt.validation.uncertainty, test,
-        [&](int done, int total, const SimResult&) {
-          progress("physics: P(held) of grasp " + std::to_string(done) + "/" +
-                   std::to_string(total) + " " +
-                   hold_probability_line(sim.hold_probabilities[static_cast<size_t>(done - 1)]));
-        },
-        opt.jobs, opt.cancel);
-  }
   sim.plan_path = fs::absolute(in.plan_path).lexically_normal().string();
   report->sim_wall_s = seconds_since(t);
-  write_sim_file(in.sim_path, sim, in.hand);
   return sim;
+}
+
+/// Draws of each grasp's P(held) for sim.json and the report: the acceptance's model with
+/// its validation.max_draws, else the realistic model in a preview of hold_preview_draws;
+/// 0 draws: none.
+int hold_draws(const RunParams& opt) {
+  return is_none(opt.validation.uncertainty) ? opt.hold_preview_draws : opt.validation.max_draws;
+}
+
+/// 2b. P(held) of every grasp of `sim` (a copy: it may run beside the pictures), with each
+/// grasp's own draws (by its index in the plan: not those that accepted it), so the report's
+/// interval is an independent check. Returns `sim` with hold_probabilities (trimmed and
+/// marked interrupted when cancelled) and the wall time it took.
+std::pair<SimDocument, double> hold_probability_stage(const RunParams& opt, const RunInputs& in,
+                                                      const PlanDocument& written, SimDocument sim,
+                                                      int threads, const RunProgress& progress) {
+  const auto t = Clock::now();
+  const bool accepted_by_model = !is_none(opt.validation.uncertainty);
+  const HoldProbabilityParams test = hold_test_params(opt.validation.min_hold_probability,
+                                                      hold_draws(opt), opt.validation.trial_seed);
+  add_hold_probabilities(
+      sim, written, in.hand, *in.mesh,
+      accepted_by_model ? opt.validation.uncertainty : UncertaintyParams{}, test,
+      [&](int done, int total, const SimResult&) {
+        progress("physics: P(held) of grasp " + std::to_string(done) + "/" + std::to_string(total) +
+                 " " +
+                 hold_probability_line(sim.hold_probabilities[static_cast<size_t>(done - 1)]));
+      },
+      threads, opt.cancel);
+  return {std::move(sim), seconds_since(t)};
 }
 
 /// Pictures of grasp k's physics frames as one strip.
@@ -198,11 +212,18 @@ Image physics_strip(Renderer& renderer, const RunInputs& in, const HandMeshes& m
   return compose_contact_sheet(panels, captions, strip);
 }
 
+/// What render_stage drew: the grasps pictured and the contact sheet's tiles and captions.
+struct RenderedGrasps {
+  int pictured = 0;
+  std::vector<Image> tiles;
+  std::vector<std::string> captions;
+};
+
 /// 3. Pictures: each planned grasp (cords, contacts), its physics frames, a contact sheet, and
 /// its 3D model for report.html's viewer (none, saying why, when three.js is missing).
-/// Returns the number of grasps pictured (fewer than planned when cancelled).
-int render_stage(const RunParams& opt, const RunInputs& in, const RunProgress& progress,
-                 const GraspSamples& samples, RunReport* report, ReportViewer* viewer) {
+/// Returns the grasps pictured (fewer than planned when cancelled) and the contact sheet's tiles.
+RenderedGrasps render_stage(const RunParams& opt, const RunInputs& in, const RunProgress& progress,
+                            const GraspSamples& samples, RunReport* report, ReportViewer* viewer) {
   const auto t = Clock::now();
   try {
     write_viewer_scripts(opt.out_dir, opt.viewer);
@@ -217,9 +238,10 @@ int render_stage(const RunParams& opt, const RunInputs& in, const RunProgress& p
   const HandMeshes meshes = make_hand_meshes(in.hand);
   OverlayStyle overlay;
   overlay.friction_coefficient = opt.job.plan.quality.contact.mu;
-  std::vector<Image> tiles;
-  std::vector<std::string> captions;
-  int k = 0;
+  RenderedGrasps out;
+  std::vector<Image>& tiles = out.tiles;
+  std::vector<std::string>& captions = out.captions;
+  int& k = out.pictured;
   for (; k < n && !opt.cancel.cancelled(); ++k) {
     const Grasp& g = plan.grasps[static_cast<size_t>(k)];
     GraspPictures pics;
@@ -266,16 +288,22 @@ int render_stage(const RunParams& opt, const RunInputs& in, const RunProgress& p
     }
     progress("render: grasp " + std::to_string(k + 1) + "/" + std::to_string(n));
   }
-  if (k == n && !tiles.empty()) {
-    ContactSheetParams sheet;
-    sheet.title = in.mesh->name + " · " + in.hand.name + " · " + to_string(opt.job.planner) +
-                  " planner · " + std::to_string(n) + " grasps";
-    report->sheet = "grasps.png";
-    write_png((fs::path(opt.out_dir) / report->sheet).string(),
-              compose_contact_sheet(tiles, captions, sheet));
-  }
   report->render_wall_s = seconds_since(t);
-  return k;
+  return out;
+}
+
+/// The contact sheet of all grasps (grasps.png), written only once every grasp is pictured.
+void write_contact_sheet(const RunParams& opt, const RunInputs& in, const RenderedGrasps& rendered,
+                         RunReport* report) {
+  if (rendered.tiles.empty()) return;
+  const auto t = Clock::now();
+  ContactSheetParams sheet;
+  sheet.title = in.mesh->name + " · " + in.hand.name + " · " + to_string(opt.job.planner) +
+                " planner · " + std::to_string(rendered.pictured) + " grasps";
+  report->sheet = "grasps.png";
+  write_png((fs::path(opt.out_dir) / report->sheet).string(),
+            compose_contact_sheet(rendered.tiles, rendered.captions, sheet));
+  report->render_wall_s += seconds_since(t);
 }
 
 }  // namespace
@@ -313,19 +341,52 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
 
   GraspSamples samples;
   samples.grasps.resize(static_cast<size_t>(n));
+  std::optional<PlanDocument> written;
   if (in.physics) {
-    report.sim = physics_stage(opt, in, progress, &samples, &report);
+    written = plan_from_json(read_plan_json(in.plan_path), in.hand, in.plan_path);
+    report.sim = physics_stage(opt, in, *written, progress, &samples, &report);
     out.sim_path = in.sim_path;
+    if (!report.sim->interrupted.empty()) {
+      write_sim_file(in.sim_path, *report.sim, in.hand);
+      return finish(report.sim->interrupted, "physics, after " +
+                                                 std::to_string(report.sim->results.size()) +
+                                                 " of " + std::to_string(n) + " grasps");
+    }
+  }
+  // P(held)'s draws run beside the pictures when there are threads to spare (the renderer
+  // draws on one), else after them; the results do not depend on which.
+  const bool draws = in.physics && hold_draws(opt) > 0;
+  const bool beside = draws && opt.render && opt.jobs > 1;
+  std::mutex saying;
+  const RunProgress said = [&](const std::string& text) {
+    const std::lock_guard<std::mutex> lock(saying);
+    progress(text);
+  };
+  std::future<std::pair<SimDocument, double>> held;
+  if (draws)
+    held = std::async(beside ? std::launch::async : std::launch::deferred,
+                      [&, sim = *report.sim, threads = beside ? opt.jobs - 1 : opt.jobs] {
+                        return hold_probability_stage(opt, in, *written, sim, threads, said);
+                      });
+  RenderedGrasps rendered;
+  if (opt.render) rendered = render_stage(opt, in, said, samples, &report, &viewer);
+  if (draws) {
+    auto [sim, wall_s] = held.get();
+    report.sim = std::move(sim);  // trimmed to the grasps whose draws finished
+    report.sim_wall_s += wall_s;
+  }
+  if (in.physics) {
+    write_sim_file(in.sim_path, *report.sim, in.hand);
     if (!report.sim->interrupted.empty())
       return finish(report.sim->interrupted,
                     "physics, after " + std::to_string(report.sim->results.size()) + " of " +
                         std::to_string(n) + " grasps");
   }
   if (opt.render) {
-    const int pictured = render_stage(opt, in, progress, samples, &report, &viewer);
-    if (pictured < n)
-      return finish(opt.cancel.reason(), "rendering, after " + std::to_string(pictured) +
+    if (rendered.pictured < n)
+      return finish(opt.cancel.reason(), "rendering, after " + std::to_string(rendered.pictured) +
                                              " of " + std::to_string(n) + " grasps");
+    write_contact_sheet(opt, in, rendered, &report);
   }
   return finish("", "");
 }

@@ -168,8 +168,11 @@ std::string run_report_markdown(const RunReport& rep) {
     md << "\nP(held): the share of draws of hand pose, friction, mass, centre of mass and grip "
           "force (docs/physics.md §3b) in which the grasp held, with its Wilson 95 % interval; "
           "drawn until the interval lies above or below "
-       << num(rep.sim->hold_test.min_hold_probability, "%.2f")
-       << ". Failures go with: the factor whose draws differ most between failed and held "
+       << num(rep.sim->hold_test.min_hold_probability, "%.2f") << " or "
+       << rep.sim->hold_test.max_draws
+       << " draws are spent (`cordgrasp validate --plan plan.json --uncertainty realistic` "
+          "draws up to 20). Failures go with: the factor whose draws differ most between failed "
+          "and held "
           "draws.\n";
   md << "\nα: skewness (0 = the hand's axis on the object's principal axis; "
         "docs/algorithm.md §9). ε: wrench-space quality (docs/algorithm.md §8). χ: XOR measure "

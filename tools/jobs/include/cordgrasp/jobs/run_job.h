@@ -33,6 +33,11 @@ struct RunParams {
   /// Validated planning (its tests, protocol: from above); validation.physics (mass,
   /// density, squeeze weight) applies to the physics of the unvalidated plan too.
   ValidationParams validation;
+  /// Draws of each grasp's P(held) under the realistic uncertainty model (docs/physics.md
+  /// §3b) that sim.json and the report give when validation.uncertainty is none: a preview
+  /// that flags fragile grasps, stopping sooner where the sequential test is decided (with a
+  /// model, validation.max_draws draws of it instead). 0: no P(held).
+  int hold_preview_draws = 5;
   PictureOptions picture;      ///< size of the pictures (view: iso)
   /// Write PNGs (planned grasps, physics frames, contact sheet), each grasp's physics
   /// animation (grasp_K.webp) and report.html's 3D models.
