@@ -4,6 +4,7 @@
 #include <random>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "cordgrasp/core/enum_names.h"
 
@@ -134,6 +135,36 @@ UncertainTrial apply_uncertainty(const Grasp& grasp, const SimParams& params,
   // The effort is sized ∝ k·m·g/μ with the true m and μ; the controller knows only the
   // nominal ones, so k carries μ / m back out.
   p.squeeze_weight_factor *= draw.squeeze_factor * draw.mu_factor / draw.mass_factor;
+  return out;
+}
+
+Grasp close_at_drawn_pose(const Grasp& drawn, const HandModel& hand, const HandSetup& setup,
+                          HandObjectCollider& collider) {
+  FingerResult closed;
+  const Eigen::VectorXd& q_start =
+      drawn.q_preshape.size() == drawn.q.size() ? drawn.q_preshape : setup.q_preshape;
+  close_fingers(hand, setup, collider, drawn.X_OB, q_start, FingerParams{}, closed);
+  Grasp out = drawn;
+  std::vector<char> reclosed(static_cast<size_t>(setup.num_links), 0);
+  for (size_t a = 0; a < hand.actors.size() && a < setup.actor_joints.size(); ++a) {
+    // A finger that meets the object no later than planned keeps the plan: it presses the
+    // object there, as the planned grasp's fingers do (a gripper's first pad pushes the free
+    // object to the other). One the drawn pose leaves short of the object closes on.
+    double further = 0.0;
+    for (const Actor::Entry& e : hand.actors[a].joints)
+      further += e.direction_speed * (closed.q[e.joint] - drawn.q[e.joint]);
+    if (!(further > 0.0)) continue;
+    for (const int j : setup.actor_joints[a]) out.q[j] = closed.q[j];
+    for (const int l : setup.actor_links[a]) reclosed[static_cast<size_t>(l)] = 1;
+  }
+  const auto on_reclosed = [&](const Contact& c) {
+    return c.link >= 0 && c.link < setup.num_links && reclosed[static_cast<size_t>(c.link)];
+  };
+  out.contacts.clear();
+  for (const Contact& c : drawn.contacts)
+    if (!on_reclosed(c)) out.contacts.push_back(c);
+  for (const Contact& c : closed.contacts)
+    if (on_reclosed(c)) out.contacts.push_back(c);
   return out;
 }
 

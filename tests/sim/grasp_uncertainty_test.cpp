@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "cordgrasp/collision/bullet_hand_collider.h"
+#include "cordgrasp/core/finger_stage.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/shapes.h"
 #include "cordgrasp/sim/hold_probability.h"
@@ -156,6 +158,68 @@ TEST(ApplyUncertainty, MovesTheHandRigidlyInItsGcpFrameAndScalesTheObjectAndGrip
   EXPECT_DOUBLE_EQ(t.params.squeeze_weight_factor, p.squeeze_weight_factor * 0.9 * 0.8 / 1.25);
   p.mass_kg = 0.2;
   EXPECT_DOUBLE_EQ(*apply_uncertainty(g, p, d).params.mass_kg, 0.25);
+}
+
+/// The parallel gripper with its right pad uncoupled: two fingers that close on their own.
+HandModel two_actor_gripper() {
+  HandModel hand = gripper();
+  const int left = find_joint(hand, "left_finger_joint");
+  const int right = find_joint(hand, "right_finger_joint");
+  hand.joints[static_cast<size_t>(right)].mimic.reset();
+  const double speed = hand.actors.at(0).joints.at(0).direction_speed;
+  hand.actors = {{"left", {{left, speed}}}, {"right", {{right, speed}}}};
+  return hand;
+}
+
+/// The drawn pose's shift of the hand along the pads' closing axis (x_G = x_O) [m].
+constexpr double kSideShift_m = 0.003;
+/// A re-closed pad stops within the finger stage's contact tolerance of the face, plus its
+/// bisection step [m].
+constexpr double kReclosedTol_m = 1e-3;
+
+TEST(CloseAtDrawnPose, AFingerTheDrawnPoseLeavesShortClosesOnAndOneThatMeetsEarlierKeepsThePlan) {
+  const HandModel hand = two_actor_gripper();
+  const auto collider = make_bullet_hand_collider(hand, box());
+  const HandSetup setup = prepare_hand(hand, *collider);
+  const Grasp planned =
+      test::top_down_pinch(hand, Eigen::Vector3d(0, 0, 0), 0.5 * kBoxSide_m, kOpenGripper_m);
+  UncertaintyDraw d;
+  d.hand_offset_G_m = Eigen::Vector3d(kSideShift_m, 0, 0);
+  const Grasp drawn = apply_uncertainty(planned, gripper_params(), d).grasp;
+  const Grasp closed = close_at_drawn_pose(drawn, hand, setup, *collider);
+  // One pad is now kSideShift_m further from its face: it closes on by about that much; the
+  // other meets its face earlier and keeps the planned opening (it pushes the box there).
+  int kept = 0, reclosed = -1;
+  for (int j = 0; j < 2; ++j) {
+    const double moved = drawn.q[j] - closed.q[j];
+    if (moved == 0.0) {
+      ++kept;
+    } else {
+      reclosed = j;
+      EXPECT_NEAR(moved, kSideShift_m, kReclosedTol_m) << j;
+    }
+  }
+  EXPECT_EQ(kept, 1);
+  ASSERT_GE(reclosed, 0);
+  // Its contacts are on the box's face, on the pad it moves.
+  ASSERT_FALSE(closed.contacts.empty());
+  for (const Contact& c : closed.contacts) {
+    EXPECT_NEAR(std::abs(c.p_O.x()), 0.5 * kBoxSide_m, kReclosedTol_m);
+    EXPECT_EQ(c.link, hand.joints[static_cast<size_t>(reclosed)].child_link);
+  }
+  EXPECT_TRUE(closed.X_OB.isApprox(drawn.X_OB, kPoseTol_m));  // the hand stays where drawn
+}
+
+TEST(CloseAtDrawnPose, TheCoupledGripperKeepsThePlanWhereverOnePadMeetsTheBoxEarlier) {
+  const auto collider = make_bullet_hand_collider(gripper(), box());
+  const HandSetup setup = prepare_hand(gripper(), *collider);
+  const Grasp planned = pinch_at_height(0.0);
+  UncertaintyDraw d;
+  d.hand_offset_G_m = Eigen::Vector3d(-kSideShift_m, 0, 0);
+  const Grasp drawn = apply_uncertainty(planned, gripper_params(), d).grasp;
+  const Grasp closed = close_at_drawn_pose(drawn, gripper(), setup, *collider);
+  EXPECT_EQ(closed.q, drawn.q);
+  EXPECT_EQ(closed.contacts.size(), drawn.contacts.size());
 }
 
 TEST(ApplyUncertainty, TheCentreOfMassOffsetMovesTheSimulatedBodysCentre) {

@@ -353,8 +353,8 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
                                                  " of " + std::to_string(n) + " grasps");
     }
   }
-  // P(held)'s draws run beside the pictures when there are threads to spare (the renderer
-  // draws on one), else after them; the results do not depend on which.
+  // With more than one thread, P(held)'s draws (on `jobs` threads) run while the renderer
+  // (one thread) draws the pictures, else after them; the results do not depend on which.
   const bool draws = in.physics && hold_draws(opt) > 0;
   const bool beside = draws && opt.render && opt.jobs > 1;
   std::mutex saying;
@@ -365,7 +365,7 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   std::future<std::pair<SimDocument, double>> held;
   if (draws)
     held = std::async(beside ? std::launch::async : std::launch::deferred,
-                      [&, sim = *report.sim, threads = beside ? opt.jobs - 1 : opt.jobs] {
+                      [&, sim = *report.sim, threads = opt.jobs] {
                         return hold_probability_stage(opt, in, *written, sim, threads, said);
                       });
   RenderedGrasps rendered;

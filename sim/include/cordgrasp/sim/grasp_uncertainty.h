@@ -6,7 +6,10 @@
 #include <array>
 #include <cstdint>
 
+#include "cordgrasp/core/finger_stage.h"
 #include "cordgrasp/core/grasp.h"
+#include "cordgrasp/core/hand_collider.h"
+#include "cordgrasp/core/hand_model.h"
 #include "cordgrasp/core/serialize.h"
 #include "cordgrasp/sim/sim_params.h"
 
@@ -87,5 +90,15 @@ struct UncertainTrial {
 /// cap it).
 UncertainTrial apply_uncertainty(const Grasp& grasp, const SimParams& params,
                                  const UncertaintyDraw& draw);
+
+/// `drawn` (a grasp whose hand apply_uncertainty moved) with the fingers that the drawn pose
+/// leaves short of the object closed on until they touch it, from the plan's preshape
+/// (close_fingers, the planner's finger stage): a robot's fingers close until contact where
+/// the hand arrives, while the planned joint values there leave such a finger short (the
+/// bounded squeeze goes only SimParams::squeeze_travel_m past them). A finger that meets the
+/// object no later than planned keeps the plan and its contacts; a re-closed one gets the
+/// contacts it closed on (none if it touched nothing). `setup` is prepare_hand(hand, collider).
+Grasp close_at_drawn_pose(const Grasp& drawn, const HandModel& hand, const HandSetup& setup,
+                          HandObjectCollider& collider);
 
 }  // namespace cordgrasp
