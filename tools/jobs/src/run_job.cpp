@@ -365,8 +365,9 @@ RunOutcome run_job(const RunParams& opt, const RunProgress& say) {
   std::future<std::pair<SimDocument, double>> held;
   if (draws)
     held = std::async(beside ? std::launch::async : std::launch::deferred,
-                      [&, sim = *report.sim, threads = opt.jobs] {
-                        return hold_probability_stage(opt, in, *written, sim, threads, said);
+                      [&, sim = *report.sim, threads = opt.jobs]() mutable {
+                        return hold_probability_stage(opt, in, *written, std::move(sim), threads,
+                                                      said);
                       });
   RenderedGrasps rendered;
   if (opt.render) rendered = render_stage(opt, in, said, samples, &report, &viewer);
