@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/enum_names.h"
 
 namespace cordgrasp {
@@ -166,6 +167,25 @@ Grasp close_at_drawn_pose(const Grasp& drawn, const HandModel& hand, const HandS
   for (const Contact& c : closed.contacts)
     if (on_reclosed(c)) out.contacts.push_back(c);
   return out;
+}
+
+bool moves_hand(const UncertaintyParams& uncertainty) {
+  return uncertainty.hand_offset_sigma_m > 0.0 || uncertainty.hand_turn_sigma_rad > 0.0;
+}
+
+DrawnPoseCloser::DrawnPoseCloser(const HandModel& hand, const Mesh& mesh)
+    : hand_(hand),
+      owned_(make_bullet_hand_collider(hand, mesh)),
+      collider_(*owned_),
+      setup_(prepare_hand(hand, collider_)) {}
+
+DrawnPoseCloser::DrawnPoseCloser(const HandModel& hand, HandObjectCollider& collider,
+                                 const HandSetup& setup)
+    : hand_(hand), collider_(collider), setup_(setup) {}
+
+Grasp DrawnPoseCloser::close(const Grasp& drawn) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return close_at_drawn_pose(drawn, hand_, setup_, collider_);
 }
 
 }  // namespace cordgrasp

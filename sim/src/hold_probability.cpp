@@ -5,11 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
-#include <memory>
-#include <mutex>
+#include <optional>
 #include <stdexcept>
 
-#include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/enum_names.h"
 #include "cordgrasp/core/parallel_for.h"
 
@@ -145,30 +143,24 @@ HoldProbability estimate_hold_probability(const Mesh& mesh, const HandModel& han
                                           const SimTests& tests,
                                           const UncertaintyParams& uncertainty,
                                           const HoldProbabilityParams& params,
-                                          const CancelToken& cancel, int jobs) {
+                                          const CancelToken& cancel, int jobs,
+                                          DrawnPoseCloser* closer) {
   check_hold_test(uncertainty, params);
   const auto start = std::chrono::steady_clock::now();
   HoldProbability out;
   out.threshold = params.min_hold_probability;
-  // Where the model moves the hand, each draw's fingers close again at the drawn pose
-  // (close_at_drawn_pose) on one collider, one draw at a time (its queries are quick).
-  std::unique_ptr<HandObjectCollider> collider;
-  HandSetup setup;
-  std::mutex closing;
-  if (uncertainty.hand_offset_sigma_m > 0.0 || uncertainty.hand_turn_sigma_rad > 0.0) {
-    collider = make_bullet_hand_collider(hand, mesh);
-    setup = prepare_hand(hand, *collider);
-  }
+  std::optional<DrawnPoseCloser> own_closer;
+  if (!moves_hand(uncertainty))
+    closer = nullptr;
+  else if (!closer)
+    closer = &own_closer.emplace(hand, mesh);
   const auto simulate = [&](int t) {
     const double cpu_start = thread_cpu_s();
     UncertainDrawResult d;
     d.trial = t;
     d.draw = draw_uncertainty(uncertainty, params.seed, grasp_index, t);
     UncertainTrial trial = apply_uncertainty(grasp, sim, d.draw);
-    if (collider) {
-      const std::lock_guard<std::mutex> lock(closing);
-      trial.grasp = close_at_drawn_pose(trial.grasp, hand, setup, *collider);
-    }
+    if (closer) trial.grasp = closer->close(trial.grasp);
     const SimResult r = validate_grasp(mesh, hand, trial.grasp, trial.params, tests);
     d.outcome = r.outcome;
     if (const PhaseResult* failed = r.held() ? nullptr : r.failed_phase())

@@ -78,6 +78,16 @@ class CandidateSource {
         threads_(threads),
         collider_(make_bullet_hand_collider(hand, mesh, collider_params(threads))) {}
 
+  /// The hold tests' re-closure at drawn hand poses, on the planner's collider (idle while a
+  /// candidate is tested).
+  DrawnPoseCloser& closer() {
+    if (!closer_) {
+      if (!setup_) setup_ = context_ ? context_->setup : prepare_hand(hand_, *collider_);
+      closer_.emplace(hand_, *collider_, *setup_);
+    }
+    return *closer_;
+  }
+
   /// The next candidate, or nullopt when the planner has none left within `time_left_s`.
   std::optional<Grasp> next(double time_left_s, PlanStats& stats) {
     if (time_left_s <= 0.0 || cancel_.cancelled()) return std::nullopt;
@@ -143,6 +153,8 @@ class CandidateSource {
   int threads_;  ///< the exploration's scans
   std::unique_ptr<HandObjectCollider> collider_;
   std::optional<PlanContext> context_;        ///< made at the first cord candidate
+  std::optional<HandSetup> setup_;            ///< for the closer
+  std::optional<DrawnPoseCloser> closer_;     ///< made at the first hold test
   static constexpr int kMaxExplorations = 4;  ///< the first and three with later seeds
   int explorations_ = 0;
   std::vector<GraspRegion> regions_;
@@ -248,8 +260,9 @@ ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, Pla
     if (uncertain) {
       // P(held) under uncertainty: draws until the Wilson interval is decided (`jobs` at a
       // time; the test stops where one at a time would).
-      const HoldProbability h = estimate_hold_probability(mesh, hand, *g, candidate, sim, tests,
-                                                          v.uncertainty, hold_test, cancel, jobs);
+      const HoldProbability h =
+          estimate_hold_probability(mesh, hand, *g, candidate, sim, tests, v.uncertainty, hold_test,
+                                    cancel, jobs, &source.closer());
       vs.trials_run += h.simulations;
       vs.physics_s += seconds_since(physics_start);
       if (!h.complete) {  // cancelled between draws: abandon the candidate
@@ -266,7 +279,7 @@ ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, Pla
       const auto confirmation_start = Clock::now();
       const HoldProbability c =
           estimate_hold_probability(mesh, hand, *g, candidate, sim, tests, v.uncertainty,
-                                    confirmation_test(hold_test), cancel, jobs);
+                                    confirmation_test(hold_test), cancel, jobs, &source.closer());
       vs.trials_run += c.simulations;
       vs.physics_s += seconds_since(confirmation_start);
       if (!c.complete) {

@@ -354,9 +354,15 @@ TEST(HoldProbability, ARimPinchIsLessLikelyToHoldThanAPinchAtTheMiddle) {
       << hold_probability_line(middle) << "\n" << hold_probability_line(rim);
   EXPECT_LE(static_cast<int>(rim.draws.size()), kComparisonDraws);
   EXPECT_TRUE(rim.complete);
-  // The same seed gives the same draws and verdicts.
-  const HoldProbability again =
-      estimate_hold_probability(box(), gripper(), pinch_at_height(rim_z), 0, p, lift, u, test);
+  // The same seed gives the same draws and verdicts, also with a re-closure collider lent to
+  // the test and used before for another grasp (as validate and validated planning do).
+  const HandModel hand = gripper();
+  const Mesh object = box();
+  DrawnPoseCloser closer(hand, object);
+  estimate_hold_probability(object, hand, pinch_at_height(0.0), 0, p, lift, u, test, {}, 1,
+                            &closer);
+  const HoldProbability again = estimate_hold_probability(object, hand, pinch_at_height(rim_z), 0,
+                                                          p, lift, u, test, {}, 1, &closer);
   ASSERT_EQ(again.draws.size(), rim.draws.size());
   for (size_t i = 0; i < rim.draws.size(); ++i) {
     EXPECT_TRUE(same_draw(again.draws[i].draw, rim.draws[i].draw));

@@ -239,10 +239,7 @@ RenderedGrasps render_stage(const RunParams& opt, const RunInputs& in, const Run
   OverlayStyle overlay;
   overlay.friction_coefficient = opt.job.plan.quality.contact.mu;
   RenderedGrasps out;
-  std::vector<Image>& tiles = out.tiles;
-  std::vector<std::string>& captions = out.captions;
-  int& k = out.pictured;
-  for (; k < n && !opt.cancel.cancelled(); ++k) {
+  for (int k = 0; k < n && !opt.cancel.cancelled(); ++k) {
     const Grasp& g = plan.grasps[static_cast<size_t>(k)];
     GraspPictures pics;
     Scene scene =
@@ -256,8 +253,8 @@ RenderedGrasps render_stage(const RunParams& opt, const RunInputs& in, const Run
     write_png((fs::path(opt.out_dir) / pics.planned).string(), renderer.render(scene, params));
     if (n > 1) {
       scene.caption.clear();
-      tiles.push_back(renderer.render(scene, params));
-      captions.push_back("#" + std::to_string(k) + " · " + quality);
+      out.tiles.push_back(renderer.render(scene, params));
+      out.captions.push_back("#" + std::to_string(k) + " · " + quality);
     }
     const std::vector<PhaseSnapshot>& s =
         samples.grasps.empty() ? std::vector<PhaseSnapshot>{} : samples.grasps[size_t(k)];
@@ -286,6 +283,7 @@ RenderedGrasps render_stage(const RunParams& opt, const RunInputs& in, const Run
       viewer->models.back() = "grasp_" + std::to_string(k);
       write_grasp_model_script(opt.out_dir, viewer->models.back(), in.hand, g, *in.mesh);
     }
+    out.pictured = k + 1;
     progress("render: grasp " + std::to_string(k + 1) + "/" + std::to_string(n));
   }
   report->render_wall_s = seconds_since(t);

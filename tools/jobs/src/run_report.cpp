@@ -171,7 +171,9 @@ std::string run_report_markdown(const RunReport& rep) {
        << num(rep.sim->hold_test.min_hold_probability, "%.2f") << " or "
        << rep.sim->hold_test.max_draws
        << " draws are spent (`cordgrasp validate --plan plan.json --uncertainty realistic` "
-          "draws up to 20). Failures go with: the factor whose draws differ most between failed "
+          "draws up to "
+       << HoldProbabilityParams{}.max_draws
+       << "). Failures go with: the factor whose draws differ most between failed "
           "and held "
           "draws.\n";
   md << "\nα: skewness (0 = the hand's axis on the object's principal axis; "

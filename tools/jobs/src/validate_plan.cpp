@@ -1,11 +1,12 @@
 #include "cordgrasp/jobs/validate_plan.h"
 
-#include <cmath>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <mutex>
+#include <optional>
+#include <sstream>
 #include <stdexcept>
 
 #include "cordgrasp/core/parallel_for.h"
@@ -165,13 +166,16 @@ void add_hold_probabilities(SimDocument& doc, const PlanDocument& plan, const Ha
   InOrderReporter reporter(total, [&](int k) {
     if (progress) progress(k + 1, total, doc.results[static_cast<size_t>(k)]);
   });
+  // One re-closure collider for every grasp (where the model moves the hand).
+  std::optional<DrawnPoseCloser> closer;
+  if (moves_hand(uncertainty) && total > 0) closer.emplace(hand, mesh);
   // One task per grasp: its draws run in order, so where the test stops is deterministic.
   parallel_for(total, jobs, [&](int k) {
     const size_t i = static_cast<size_t>(k);
     const int index = doc.grasp_indices[i];
     doc.hold_probabilities[i] = estimate_hold_probability(
         mesh, hand, plan.grasps[static_cast<size_t>(index)], index, doc.params, doc.tests,
-        uncertainty, test, cancel);
+        uncertainty, test, cancel, 1, closer ? &*closer : nullptr);
     reporter.finished(k);
   });
   std::vector<char> complete(static_cast<size_t>(total), 0);

@@ -5,11 +5,14 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <mutex>
 
 #include "cordgrasp/core/finger_stage.h"
 #include "cordgrasp/core/grasp.h"
 #include "cordgrasp/core/hand_collider.h"
 #include "cordgrasp/core/hand_model.h"
+#include "cordgrasp/core/mesh.h"
 #include "cordgrasp/core/serialize.h"
 #include "cordgrasp/sim/sim_params.h"
 
@@ -100,5 +103,29 @@ UncertainTrial apply_uncertainty(const Grasp& grasp, const SimParams& params,
 /// contacts it closed on (none if it touched nothing). `setup` is prepare_hand(hand, collider).
 Grasp close_at_drawn_pose(const Grasp& drawn, const HandModel& hand, const HandSetup& setup,
                           HandObjectCollider& collider);
+
+/// Whether `uncertainty` moves the hand (a hand offset or turn with σ > 0): then each draw's
+/// fingers close again at the drawn pose.
+bool moves_hand(const UncertaintyParams& uncertainty);
+
+/// close_at_drawn_pose for the tests of one hand and object, one draw at a time from any
+/// thread: a collider with its hand setup, built once per plan (or borrowed from the planner,
+/// which already has one) rather than once per grasp. `hand` outlives it.
+class DrawnPoseCloser {
+ public:
+  /// Builds a collider for `hand` and `mesh` and prepares the hand on it.
+  DrawnPoseCloser(const HandModel& hand, const Mesh& mesh);
+  /// Borrows `collider` (built for `hand` and the object) and its `setup`; both outlive this.
+  DrawnPoseCloser(const HandModel& hand, HandObjectCollider& collider, const HandSetup& setup);
+  /// close_at_drawn_pose(drawn, hand, setup, collider), serialized.
+  Grasp close(const Grasp& drawn);
+
+ private:
+  const HandModel& hand_;
+  std::unique_ptr<HandObjectCollider> owned_;
+  HandObjectCollider& collider_;
+  HandSetup setup_;
+  std::mutex mutex_;
+};
 
 }  // namespace cordgrasp

@@ -120,14 +120,17 @@ struct HoldProbability {
 /// (apply_uncertainty on `sim`, then validate_grasp with `tests`) until stop_drawing says so.
 /// Deterministic: the draws depend on (params.seed, grasp_index, draw) alone; `jobs` draws
 /// are simulated at once and those past the stop discarded, so the result does not depend on
-/// it. `cancel` is checked before each batch.
+/// it. `cancel` is checked before each batch. Where the model moves the hand (moves_hand),
+/// each draw's fingers close again at the drawn pose with `closer`, or with one built for
+/// this call when it is null.
 /// @throws std::invalid_argument for bad params (check_*).
 HoldProbability estimate_hold_probability(const Mesh& mesh, const HandModel& hand,
                                           const Grasp& grasp, int grasp_index, const SimParams& sim,
                                           const SimTests& tests,
                                           const UncertaintyParams& uncertainty,
                                           const HoldProbabilityParams& params,
-                                          const CancelToken& cancel = {}, int jobs = 1);
+                                          const CancelToken& cancel = {}, int jobs = 1,
+                                          DrawnPoseCloser* closer = nullptr);
 
 /// "0.85 [0.64, 0.95]": P(held) and its Wilson 95 % interval.
 std::string hold_probability_text(const HoldProbability& h);
