@@ -81,10 +81,9 @@ class CandidateSource {
   /// The hold tests' re-closure at drawn hand poses, on the planner's collider (idle while a
   /// candidate is tested).
   DrawnPoseCloser& closer() {
-    if (!closer_) {
-      if (!setup_) setup_ = context_ ? context_->setup : prepare_hand(hand_, *collider_);
-      closer_.emplace(hand_, *collider_, *setup_);
-    }
+    if (!closer_)
+      closer_.emplace(hand_, *collider_,
+                      context_ ? context_->setup : prepare_hand(hand_, *collider_));
     return *closer_;
   }
 
@@ -153,7 +152,6 @@ class CandidateSource {
   int threads_;  ///< the exploration's scans
   std::unique_ptr<HandObjectCollider> collider_;
   std::optional<PlanContext> context_;        ///< made at the first cord candidate
-  std::optional<HandSetup> setup_;            ///< for the closer
   std::optional<DrawnPoseCloser> closer_;     ///< made at the first hold test
   static constexpr int kMaxExplorations = 4;  ///< the first and three with later seeds
   int explorations_ = 0;

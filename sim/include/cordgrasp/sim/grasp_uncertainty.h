@@ -115,7 +115,8 @@ class DrawnPoseCloser {
  public:
   /// Builds a collider for `hand` and `mesh` and prepares the hand on it.
   DrawnPoseCloser(const HandModel& hand, const Mesh& mesh);
-  /// Borrows `collider` (built for `hand` and the object) and its `setup`; both outlive this.
+  /// Borrows `collider` (built for `hand` and the object; it outlives this) with its hand
+  /// `setup` (prepare_hand on it, copied).
   DrawnPoseCloser(const HandModel& hand, HandObjectCollider& collider, const HandSetup& setup);
   /// close_at_drawn_pose(drawn, hand, setup, collider), serialized.
   Grasp close(const Grasp& drawn);
