@@ -52,6 +52,10 @@ constexpr double kMinThumbSide_m = 0.005;
 /// (difference of cosines) than the thumb by position.
 constexpr double kAmbiguousThumb = 0.25;
 constexpr double kClearlyMoreAgainst = 0.3;
+/// Fingers in a row point the same way at rest: their extensions' cosine is at least this; an
+/// ambiguous thumb is the one digit whose cosine with each of them is lower by the margin.
+constexpr double kParallelFingersCosine = 0.95;
+constexpr double kOddThumbMargin = 0.2;
 /// A digit's joints close together by at most this much in the meeting-point sweep [rad]: a
 /// straight digit then points across the palm.
 constexpr double kMaxCurl_rad = M_PI / 2;
@@ -61,6 +65,11 @@ constexpr double kRootsApartCosine = 0.85;
 /// ... and when the palm's centroid lies between their roots along that axis, at least this
 /// fraction of the way from either side.
 constexpr double kPalmBetween = 1.0 / 3.0;
+/// The roots' plane is the palm's face only when its normal lies across the closing axis
+/// (cosine at most this).
+constexpr double kRootsPlaneAcrossAxis = 0.3;
+/// Two digits' roots stand apart (jaw to jaw) at least this far [m].
+constexpr double kMinRootsApart_m = 0.01;
 
 struct DraftFinger {
   int root_joint = -1;
@@ -392,6 +401,51 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   std::vector<Eigen::Vector3d> closing_motion(nf, Eigen::Vector3d::Zero());
   if (meet.found) closing_motion = meet.start_motion_W;
 
+  // Flexing joints of finger i: revolute, one-sided limits, the axis along the most distal such
+  // joint's (one across it, a Barrett-like spread, turns the finger sideways).
+  auto one_sided = [&](int j) {
+    const Joint& joint = hand.joints[j];
+    const double up = joint.upper - q0[j], down = q0[j] - joint.lower;
+    return joint.type == JointType::kRevolute &&
+           std::abs(up - down) >= kAsymmetry * (joint.upper - joint.lower);
+  };
+  auto axis_W = [&](int j) {
+    return Eigen::Vector3d(X0[hand.joints[j].child_link].linear() * hand.joints[j].axis);
+  };
+  auto flexing_joints = [&](size_t i) {
+    Eigen::Vector3d distal_axis = Eigen::Vector3d::Zero();
+    for (int j : fingers[i].joints)
+      if (one_sided(j)) distal_axis = axis_W(j);
+    std::vector<int> out;
+    for (int j : fingers[i].joints)
+      if (one_sided(j) && std::abs(axis_W(j).dot(distal_axis)) >= kSameAxisCosine) out.push_back(j);
+    return out;
+  };
+  // Extension of finger i: from its first flexing joint (else its root) to its centroid.
+  auto finger_extension = [&](size_t i) {
+    const std::vector<int> flexing = flexing_joints(i);
+    const Eigen::Vector3d base =
+        flexing.empty() ? roots[i] : X0[hand.joints[flexing.front()].child_link].translation();
+    return Eigen::Vector3d((centres[i] - base).normalized());
+  };
+  // Flexion of finger i: each flexing joint's tip motion towards its larger side, across the
+  // finger's extension and the joint axis (a fingertip off the finger's centre line, a bent
+  // distal link, does not tilt it).
+  auto finger_flexion = [&](size_t i) {
+    Eigen::Vector3d flexion = Eigen::Vector3d::Zero();
+    const Eigen::Vector3d e = finger_extension(i);
+    for (int j : flexing_joints(i)) {
+      const Joint& joint = hand.joints[j];
+      const double up = joint.upper - q0[j], down = q0[j] - joint.lower;
+      Eigen::Vector3d v = tip_velocity(hand, fingers[i], q0, j);
+      v -= v.dot(e) * e;  // without the finger's own extension
+      const Eigen::Vector3d across = axis_W(j).cross(e);
+      if (across.norm() > kMinAcross && v.norm() > 1e-9)
+        v = (v.dot(across) >= 0 ? 1.0 : -1.0) * across;
+      if (v.norm() > 1e-9) flexion += (up > down ? 1.0 : -1.0) * v.normalized();
+    }
+    return flexion;
+  };
   int thumb = 0;
   double confidence_thumb = 0.0;
   if (nf > 1) {
@@ -451,6 +505,43 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     }
     thumb_why = why.str();
   }
+  // Direction: fingers standing in a row point the same way at rest and the thumb does not.
+  // Two digits that close against each other look alike to the opposition test above; the
+  // one that points elsewhere than a row of parallel others is the thumb.
+  if (nf > 2 && confidence_thumb < kAmbiguousThumb) {
+    std::vector<Eigen::Vector3d> e(nf);
+    for (size_t i = 0; i < nf; ++i) e[i] = finger_extension(i);
+    int odd = -1, n_odd = 0;
+    double odd_cosine = 1.0;
+    for (size_t i = 0; i < nf; ++i) {
+      bool row = true;
+      double most_alike = -1.0;
+      for (size_t a = 0; a < nf; ++a) {
+        if (a == i) continue;
+        most_alike = std::max(most_alike, e[i].dot(e[a]));
+        for (size_t b = a + 1; b < nf; ++b)
+          if (b != i && e[a].dot(e[b]) < kParallelFingersCosine) row = false;
+      }
+      if (row && most_alike <= kParallelFingersCosine - kOddThumbMargin) {
+        odd = int(i);
+        odd_cosine = most_alike;
+        ++n_odd;
+      }
+    }
+    if (n_odd == 1 && !fingers[odd].driven_elsewhere) {
+      std::ostringstream why;
+      why << std::fixed << std::setprecision(2);
+      if (odd != thumb)
+        why << "the other fingers point the same way at rest and it does not (cosine " << odd_cosine
+            << "); '" << finger_name(hand, fingers[thumb]) << "': " << thumb_why;
+      else
+        why << thumb_why << "; and it points elsewhere than the other fingers (cosine "
+            << odd_cosine << ")";
+      thumb = odd;
+      confidence_thumb = std::max(confidence_thumb, std::min(0.9, 1.0 - odd_cosine));
+      thumb_why = why.str();
+    }
+  }
   guess("thumb", finger_name(hand, fingers[thumb]), confidence_thumb, thumb_why);
 
   // Palm normal: the non-thumb fingers' flexion direction (joints with asymmetric limits,
@@ -458,58 +549,21 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   Eigen::Vector3d extension = Eigen::Vector3d::Zero(), flexion = Eigen::Vector3d::Zero();
   Eigen::Vector3d others_tips = Eigen::Vector3d::Zero();
   int n_others = 0;
-  // Flexing joints of finger i: revolute, one-sided limits, the axis along the most distal such
-  // joint's (one across it, a Barrett-like spread, turns the finger sideways).
-  auto one_sided = [&](int j) {
-    const Joint& joint = hand.joints[j];
-    const double up = joint.upper - q0[j], down = q0[j] - joint.lower;
-    return joint.type == JointType::kRevolute &&
-           std::abs(up - down) >= kAsymmetry * (joint.upper - joint.lower);
-  };
-  auto axis_W = [&](int j) {
-    return Eigen::Vector3d(X0[hand.joints[j].child_link].linear() * hand.joints[j].axis);
-  };
-  auto flexing_joints = [&](size_t i) {
-    Eigen::Vector3d distal_axis = Eigen::Vector3d::Zero();
-    for (int j : fingers[i].joints)
-      if (one_sided(j)) distal_axis = axis_W(j);
-    std::vector<int> out;
-    for (int j : fingers[i].joints)
-      if (one_sided(j) && std::abs(axis_W(j).dot(distal_axis)) >= kSameAxisCosine)
-        out.push_back(j);
-    return out;
-  };
-  // Extension of finger i: from its first flexing joint (else its root) to its centroid.
-  auto finger_extension = [&](size_t i) {
-    const std::vector<int> flexing = flexing_joints(i);
-    const Eigen::Vector3d base =
-        flexing.empty() ? roots[i] : X0[hand.joints[flexing.front()].child_link].translation();
-    return Eigen::Vector3d((centres[i] - base).normalized());
-  };
-  // Flexion of finger i: each flexing joint's tip motion towards its larger side, across the
-  // finger's extension and the joint axis (a fingertip off the finger's centre line, a bent
-  // distal link, does not tilt it).
-  auto finger_flexion = [&](size_t i) {
-    Eigen::Vector3d flexion = Eigen::Vector3d::Zero();
-    const Eigen::Vector3d e = finger_extension(i);
-    for (int j : flexing_joints(i)) {
-      const Joint& joint = hand.joints[j];
-      const double up = joint.upper - q0[j], down = q0[j] - joint.lower;
-      Eigen::Vector3d v = tip_velocity(hand, fingers[i], q0, j);
-      v -= v.dot(e) * e;  // without the finger's own extension
-      const Eigen::Vector3d across = axis_W(j).cross(e);
-      if (across.norm() > kMinAcross && v.norm() > 1e-9)
-        v = (v.dot(across) >= 0 ? 1.0 : -1.0) * across;
-      if (v.norm() > 1e-9) flexion += (up > down ? 1.0 : -1.0) * v.normalized();
-    }
-    return flexion;
-  };
+  // Fingers that flex against each other (opposed digits, the thumb among them mistaken for a
+  // finger) share the axis, not the side: each counts along the first one's side.
+  bool flexions_oppose = false;
   for (size_t i = 0; i < nf; ++i) {
     if (int(i) == thumb) continue;
     extension += finger_extension(i);
     others_tips += tips[i];
     ++n_others;
-    flexion += finger_flexion(i);
+    Eigen::Vector3d f = finger_flexion(i);
+    if (f.norm() > 1e-9 && flexion.norm() > 1e-9 &&
+        f.normalized().dot(flexion.normalized()) < -kOpposingCosine) {
+      f = -f;
+      flexions_oppose = true;
+    }
+    flexion += f;
   }
   // A thumb that flexes like the fingers (a Barrett-like hand) counts too; one that flexes
   // towards them (a human-like thumb) does not.
@@ -591,7 +645,11 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     if (n_palm > 0 && n_fing > 0) {
       normal_W = fingers_c / n_fing - palm_c / n_palm;
       if (nf == 2) {
-        const Eigen::Vector3d jaw = (centres[1] - centres[0]).normalized();
+        // Jaw to jaw: between the digits' roots when they stand apart (revolute digits of
+        // unequal lengths have their centroids at unequal heights), else their centroids.
+        const bool roots_apart = (roots[1] - roots[0]).norm() >= kMinRootsApart_m;
+        const Eigen::Vector3d jaw =
+            (roots_apart ? roots[1] - roots[0] : centres[1] - centres[0]).normalized();
         normal_W -= normal_W.dot(jaw) * jaw;
       }
     }
@@ -627,8 +685,38 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
                    " across the palm between them: from the digits' roots to where " +
                    meets.str() + " (" + num(std::round(w.norm() * 1000)) +
                    " mm), across that closing axis";
+      // Three or more roots spread over the palm's face span it: its normal is theirs, on the
+      // side where the fingertips meet (digits of unequal lengths meet off the roots' centre).
+      const hand_draft::RootsPlane plane = hand_draft::roots_plane(roots);
+      // Fewer roots: digits curl across their flexing joints' axes, so the normal lies across
+      // both that axis and the closing axis (the meeting point of fingertips on box corners
+      // lies off that plane).
+      Eigen::Vector3d joint_axis = Eigen::Vector3d::Zero();
+      for (size_t i = 0; i < nf; ++i)
+        for (int j : flexing_joints(i)) {
+          const Eigen::Vector3d a = X0[hand.joints[j].child_link].linear() * hand.joints[j].axis;
+          joint_axis += a.dot(joint_axis) >= 0.0 ? a : Eigen::Vector3d(-a);
+        }
+      if (plane.found && std::abs(plane.normal_W.dot(axis_W)) <= kRootsPlaneAcrossAxis) {
+        Eigen::Vector3d m = plane.normal_W - plane.normal_W.dot(axis_W) * axis_W;
+        if (m.dot(normal_W) < 0.0) m = -m;
+        normal_W = m.normalized();
+        normal_why += "; the normal of the plane of the " + std::to_string(nf) +
+                      " digits' roots, on that side";
+      } else if (joint_axis.norm() > 1e-9 &&
+                 std::abs(joint_axis.normalized().dot(axis_W)) <= kRootsPlaneAcrossAxis) {
+        Eigen::Vector3d m = axis_W.cross(joint_axis).normalized();
+        if (m.dot(normal_W) < 0.0) m = -m;
+        normal_W = m;
+        normal_why += "; across the digits' flexing joint axes, on that side";
+      }
     } else {
-      const double ahead_m = (meet.p_W - palm_c).dot(normal_W);
+      double ahead_m = (meet.p_W - palm_c).dot(normal_W);
+      if (flexions_oppose && ahead_m < 0.0) {  // the flexion axis has no side of its own
+        normal_W = -normal_W;
+        ahead_m = -ahead_m;
+        normal_why += " (fingers flexing against each other: the side where they meet)";
+      }
       meets << " " << num(std::round(ahead_m * 1000)) << " mm in front of the palm along it";
       if (ahead_m > 0.0) {
         normal_why += "; " + meets.str();
@@ -656,42 +744,49 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     double worst = 1.0;
     std::vector<double> closing_cosine;  // per listed joint
     std::ostringstream listed;
-    for (int j : f.joints) {
-      const Joint& joint = hand.joints[j];
-      const Eigen::Vector3d v = tip_velocity(hand, f, q0, j);
-      if (v.norm() < 1e-9) continue;
-      Eigen::Vector3d towards = normal_W;
-      if (joint.type == JointType::kPrismatic || is_thumb) {
-        const Eigen::Vector3d target = is_thumb ? others_tips : thumb_tip;
-        towards = target - tips[i];
-        if (joint.type == JointType::kPrismatic && nf == 2) towards = tips[1 - i] - tips[i];
-        towards -= towards.dot(normal_W) * normal_W;
-        if (towards.norm() < 1e-9) continue;
-        towards.normalize();
+    // Of two digits, one whose joints do not move its tip along the palm normal closes towards
+    // the other, as the thumb does (jaws on joints with two-sided limits).
+    const int passes = nf == 2 && !is_thumb ? 2 : 1;
+    bool closes_to_other = is_thumb;
+    for (int pass = 0; pass < passes && actor.joints.empty(); ++pass) {
+      const bool to_other = is_thumb || pass == 1;
+      closes_to_other = to_other;
+      for (int j : f.joints) {
+        const Joint& joint = hand.joints[j];
+        const Eigen::Vector3d v = tip_velocity(hand, f, q0, j);
+        if (v.norm() < 1e-9) continue;
+        Eigen::Vector3d towards = normal_W;
+        if (joint.type == JointType::kPrismatic || to_other) {
+          const Eigen::Vector3d target = is_thumb ? others_tips : thumb_tip;
+          towards = target - tips[i];
+          if (joint.type == JointType::kPrismatic && nf == 2) towards = tips[1 - i] - tips[i];
+          towards -= towards.dot(normal_W) * normal_W;
+          if (towards.norm() < 1e-9) continue;
+          towards.normalize();
+        }
+        if (opposed && joint.type == JointType::kRevolute) {
+          // Opposed digits close across the palm, towards where the fingertips meet.
+          towards = (meet.p_W - tips[i]).dot(opposition_W) >= 0 ? opposition_W : -opposition_W;
+        }
+        double c = v.normalized().dot(towards);
+        if ((to_other || opposed) && joint.type != JointType::kPrismatic) {
+          // A revolute thumb closes towards the others, or towards them and the palm's front, or
+          // (not opposed) towards them and the palm: a human-like thumb standing out of the palm
+          // face closes up it and back towards it. When the tip clearly moves towards or away
+          // from the others, that decides the sign; the palm's side only adds confidence.
+          const double c2 = v.normalized().dot((towards + normal_W).normalized());
+          const bool sign_of_c = is_thumb && !opposed && std::abs(c) >= kThumbSignCosine;
+          const double c3 = sign_of_c ? v.normalized().dot((towards - normal_W).normalized()) : 0.0;
+          for (const double ci : {c2, c3})
+            if (std::abs(ci) > std::abs(c) && (!sign_of_c || ci * c > 0.0)) c = ci;
+        }
+        if (std::abs(c) < kMinClosingCosine) continue;
+        const double speed =
+            (c > 0 ? 1.0 : -1.0) * (joint.type == JointType::kPrismatic ? 0.1 : 1.0);
+        actor.joints.push_back({j, speed});
+        closing_cosine.push_back(std::abs(c));
+        worst = std::min(worst, std::abs(c));
       }
-      if (opposed && joint.type == JointType::kRevolute) {
-        // Opposed digits close across the palm, towards where the fingertips meet.
-        towards = (meet.p_W - tips[i]).dot(opposition_W) >= 0 ? opposition_W : -opposition_W;
-      }
-      double c = v.normalized().dot(towards);
-      if ((is_thumb || opposed) && joint.type != JointType::kPrismatic) {
-        // A revolute thumb closes towards the others, or towards them and the palm's front, or
-        // (not opposed) towards them and the palm: a human-like thumb standing out of the palm
-        // face closes up it and back towards it. When the tip clearly moves towards or away
-        // from the others, that decides the sign; the palm's side only adds confidence.
-        const double c2 = v.normalized().dot((towards + normal_W).normalized());
-        const bool sign_of_c = is_thumb && !opposed && std::abs(c) >= kThumbSignCosine;
-        const double c3 =
-            sign_of_c ? v.normalized().dot((towards - normal_W).normalized()) : 0.0;
-        for (const double ci : {c2, c3})
-          if (std::abs(ci) > std::abs(c) && (!sign_of_c || ci * c > 0.0)) c = ci;
-      }
-      if (std::abs(c) < kMinClosingCosine) continue;
-      const double speed =
-          (c > 0 ? 1.0 : -1.0) * (joint.type == JointType::kPrismatic ? 0.1 : 1.0);
-      actor.joints.push_back({j, speed});
-      closing_cosine.push_back(std::abs(c));
-      worst = std::min(worst, std::abs(c));
     }
     // A revolute thumb's joints about one axis curl it one way: the surest sets the sign of
     // the others (a distal joint's tip motion, from a box corner, can point the other way).
@@ -724,7 +819,9 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     guess("actor " + actor.name, listed.str(), worst,
           opposed    ? "tip moves across the palm towards where the fingertips meet"
           : is_thumb ? "tip moves towards the other fingertips"
-                     : "tip moves along the palm normal");
+          : closes_to_other
+              ? "tip moves towards the other digit's (none of its joints along the palm normal)"
+              : "tip moves along the palm normal");
     hand.actors.push_back(std::move(actor));
   }
   if (hand.actors.empty())

@@ -76,6 +76,23 @@ Eigen::Vector3d main_closing_axis(const std::vector<Eigen::Vector3d>& closing_mo
   return eig.eigenvectors().col(2);  // eigenvalues ascending
 }
 
+RootsPlane roots_plane(const std::vector<Eigen::Vector3d>& roots_W, double min_second_ratio,
+                       double max_flat_ratio) {
+  RootsPlane out;
+  if (roots_W.size() < 3) return out;
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& r : roots_W) c += r / double(roots_W.size());
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3d& r : roots_W) scatter += (r - c) * (r - c).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(scatter);
+  const Eigen::Vector3d sd = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();  // ascending
+  if (sd[2] <= 0.0 || sd[1] < min_second_ratio * sd[2] || sd[0] > max_flat_ratio * sd[1])
+    return out;
+  out.found = true;
+  out.normal_W = eig.eigenvectors().col(0);
+  return out;
+}
+
 Opposition opposition_across(const Eigen::Vector3d& axis_W,
                              const std::vector<Eigen::Vector3d>& roots_W,
                              const std::vector<Eigen::Vector3d>& closing_motion_W,

@@ -66,4 +66,17 @@ Opposition opposition_across(const Eigen::Vector3d& axis_W,
                              const std::vector<Eigen::Vector3d>& closing_motion_W,
                              const Eigen::Vector3d& palm_W, double min_cosine);
 
+/// The plane through three or more points that spread over two directions (a palm's face
+/// holding the digits' roots).
+struct RootsPlane {
+  bool found = false;  ///< >= 3 points, spread along a second direction, flat across it
+  Eigen::Vector3d normal_W = Eigen::Vector3d::Zero();  ///< unit, sign arbitrary
+};
+
+/// The plane of `roots_W` when their spread along the second principal direction is at least
+/// `min_second_ratio` of the first's, and across the plane at most `max_flat_ratio` of the
+/// second's (standard deviations).
+RootsPlane roots_plane(const std::vector<Eigen::Vector3d>& roots_W, double min_second_ratio = 0.25,
+                       double max_flat_ratio = 0.2);
+
 }  // namespace cordgrasp::hand_draft

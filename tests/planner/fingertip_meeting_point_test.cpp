@@ -109,5 +109,20 @@ TEST(FingertipMeetingPoint, DigitsThatDoNotCloseHaveNoMeetingPoint) {
       fingertip_meeting_point(hand, Eigen::VectorXd::Zero(hand.joints.size()), digits).found);
 }
 
+TEST(FingertipMeetingPoint, RootsSpreadOverAFaceGiveItsNormalAndARowGivesNone) {
+  // Three roots on a tilted face: two on one side, one across (an opposed three-digit hand).
+  const Eigen::Vector3d n = Eigen::Vector3d(1, 2, 3).normalized();
+  const Eigen::Vector3d u = n.unitOrthogonal(), v = n.cross(u);
+  const std::vector<Eigen::Vector3d> face = {0.03 * u + 0.02 * v, 0.03 * u - 0.02 * v, -0.03 * u};
+  const RootsPlane plane = roots_plane(face);
+  ASSERT_TRUE(plane.found);
+  EXPECT_NEAR(std::abs(plane.normal_W.dot(n)), 1.0, 1e-9);
+  // Collinear roots (fingers in a row) and two roots span no plane.
+  EXPECT_FALSE(roots_plane({-0.02 * u, 0.001 * v, 0.02 * u}).found);
+  EXPECT_FALSE(roots_plane({-0.02 * u, 0.02 * u}).found);
+  // Roots off the face by as much as across it (a thumb standing out) are not a face.
+  EXPECT_FALSE(roots_plane({0.03 * u, -0.03 * u, 0.03 * v, 0.03 * n}).found);
+}
+
 }  // namespace
 }  // namespace cordgrasp::hand_draft
