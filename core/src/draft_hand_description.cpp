@@ -806,8 +806,11 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
     for (size_t k = 0; k < actor.joints.size(); ++k)
       listed << (k ? ", " : "") << hand.joints[actor.joints[k].joint].name
              << (actor.joints[k].direction_speed > 0 ? " +" : " -");
-    // A thumb with more closing joints than two: its root joint turns it into opposition.
-    if (is_thumb && actor.joints.size() > 2 && actor.joints.front().joint == f.joints.front()) {
+    // A thumb with more closing joints than two: its root joint turns it into opposition, when
+    // it turns about another axis than the next one (else it flexes the thumb like them).
+    if (is_thumb && actor.joints.size() > 2 && actor.joints.front().joint == f.joints.front() &&
+        std::abs(axis_W(actor.joints[0].joint).dot(axis_W(actor.joints[1].joint))) <
+            kSameAxisCosine) {
       actor.joints.erase(actor.joints.begin());
       listed.str("");
       for (size_t k = 0; k < actor.joints.size(); ++k)
