@@ -65,9 +65,9 @@ constexpr double kRootsApartCosine = 0.85;
 /// ... and when the palm's centroid lies between their roots along that axis, at least this
 /// fraction of the way from either side.
 constexpr double kPalmBetween = 1.0 / 3.0;
-/// The roots' plane is the palm's face only when its normal lies across the closing axis
-/// (cosine at most this).
-constexpr double kRootsPlaneAcrossAxis = 0.3;
+/// The roots' plane normal, or the digits' flexing joint axis, lies across the closing axis
+/// when its cosine with it is at most this.
+constexpr double kAcrossClosingAxisCosine = 0.3;
 /// Two digits' roots stand apart (jaw to jaw) at least this far [m].
 constexpr double kMinRootsApart_m = 0.01;
 
@@ -511,24 +511,11 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   if (nf > 2 && confidence_thumb < kAmbiguousThumb) {
     std::vector<Eigen::Vector3d> e(nf);
     for (size_t i = 0; i < nf; ++i) e[i] = finger_extension(i);
-    int odd = -1, n_odd = 0;
-    double odd_cosine = 1.0;
-    for (size_t i = 0; i < nf; ++i) {
-      bool row = true;
-      double most_alike = -1.0;
-      for (size_t a = 0; a < nf; ++a) {
-        if (a == i) continue;
-        most_alike = std::max(most_alike, e[i].dot(e[a]));
-        for (size_t b = a + 1; b < nf; ++b)
-          if (b != i && e[a].dot(e[b]) < kParallelFingersCosine) row = false;
-      }
-      if (row && most_alike <= kParallelFingersCosine - kOddThumbMargin) {
-        odd = int(i);
-        odd_cosine = most_alike;
-        ++n_odd;
-      }
-    }
-    if (n_odd == 1 && !fingers[odd].driven_elsewhere) {
+    const hand_draft::OddDirection o =
+        hand_draft::odd_direction_out_of_row(e, kParallelFingersCosine, kOddThumbMargin);
+    const int odd = o.index;
+    const double odd_cosine = o.cosine;
+    if (odd >= 0 && !fingers[odd].driven_elsewhere) {
       std::ostringstream why;
       why << std::fixed << std::setprecision(2);
       if (odd != thumb)
@@ -697,14 +684,14 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
           const Eigen::Vector3d a = X0[hand.joints[j].child_link].linear() * hand.joints[j].axis;
           joint_axis += a.dot(joint_axis) >= 0.0 ? a : Eigen::Vector3d(-a);
         }
-      if (plane.found && std::abs(plane.normal_W.dot(axis_W)) <= kRootsPlaneAcrossAxis) {
+      if (plane.found && std::abs(plane.normal_W.dot(axis_W)) <= kAcrossClosingAxisCosine) {
         Eigen::Vector3d m = plane.normal_W - plane.normal_W.dot(axis_W) * axis_W;
         if (m.dot(normal_W) < 0.0) m = -m;
         normal_W = m.normalized();
         normal_why += "; the normal of the plane of the " + std::to_string(nf) +
                       " digits' roots, on that side";
       } else if (joint_axis.norm() > 1e-9 &&
-                 std::abs(joint_axis.normalized().dot(axis_W)) <= kRootsPlaneAcrossAxis) {
+                 std::abs(joint_axis.normalized().dot(axis_W)) <= kAcrossClosingAxisCosine) {
         Eigen::Vector3d m = axis_W.cross(joint_axis).normalized();
         if (m.dot(normal_W) < 0.0) m = -m;
         normal_W = m;

@@ -1,6 +1,7 @@
 #include "fingertip_meeting_point.h"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 
 #include "cordgrasp/core/kinematics.h"
@@ -90,6 +91,30 @@ RootsPlane roots_plane(const std::vector<Eigen::Vector3d>& roots_W, double min_s
     return out;
   out.found = true;
   out.normal_W = eig.eigenvectors().col(0);
+  return out;
+}
+
+OddDirection odd_direction_out_of_row(const std::vector<Eigen::Vector3d>& directions,
+                                      double parallel_cosine, double margin) {
+  OddDirection out;
+  int found = 0;
+  const size_t n = directions.size();
+  for (size_t i = 0; i < n && n > 2; ++i) {
+    bool row = true;
+    double most_alike = -1.0;
+    for (size_t a = 0; a < n; ++a) {
+      if (a == i) continue;
+      most_alike = std::max(most_alike, directions[i].dot(directions[a]));
+      for (size_t b = a + 1; b < n; ++b)
+        if (b != i && directions[a].dot(directions[b]) < parallel_cosine) row = false;
+    }
+    if (row && most_alike <= parallel_cosine - margin) {
+      out.index = int(i);
+      out.cosine = most_alike;
+      ++found;
+    }
+  }
+  if (found != 1) out = OddDirection{};
   return out;
 }
 

@@ -79,4 +79,14 @@ struct RootsPlane {
 RootsPlane roots_plane(const std::vector<Eigen::Vector3d>& roots_W, double min_second_ratio = 0.25,
                        double max_flat_ratio = 0.2);
 
+/// The one direction out of a row: every other pair of `directions` (unit) has a cosine of at
+/// least `parallel_cosine`, and this one's cosine with each of them is at most
+/// `parallel_cosine - margin`. index -1 when no direction, or more than one, is so.
+struct OddDirection {
+  int index = -1;
+  double cosine = 1.0;  ///< its largest cosine with another direction
+};
+OddDirection odd_direction_out_of_row(const std::vector<Eigen::Vector3d>& directions,
+                                      double parallel_cosine, double margin);
+
 }  // namespace cordgrasp::hand_draft

@@ -124,5 +124,19 @@ TEST(FingertipMeetingPoint, RootsSpreadOverAFaceGiveItsNormalAndARowGivesNone) {
   EXPECT_FALSE(roots_plane({0.03 * u, -0.03 * u, 0.03 * v, 0.03 * n}).found);
 }
 
+TEST(FingertipMeetingPoint, TheOneDigitPointingOutOfARowOfParallelFingersIsFound) {
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d tilted = Eigen::Vector3d(1, 0, 1).normalized();  // 45° off the row
+  const OddDirection odd = odd_direction_out_of_row({up, up, tilted, up}, 0.95, 0.2);
+  EXPECT_EQ(odd.index, 2);
+  EXPECT_NEAR(odd.cosine, std::sqrt(0.5), 1e-12);
+  // All parallel (a Barrett-like hand at rest), or two odd ones: none.
+  EXPECT_EQ(odd_direction_out_of_row({up, up, up}, 0.95, 0.2).index, -1);
+  EXPECT_EQ(odd_direction_out_of_row({up, tilted, Eigen::Vector3d::UnitX()}, 0.95, 0.2).index, -1);
+  // Off the row by less than the margin: not out of it.
+  const Eigen::Vector3d near = Eigen::Vector3d(0.3, 0, 1).normalized();  // cosine 0.958
+  EXPECT_EQ(odd_direction_out_of_row({up, up, near}, 0.95, 0.2).index, -1);
+}
+
 }  // namespace
 }  // namespace cordgrasp::hand_draft
