@@ -720,6 +720,34 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   guess("palm normal", "'" + hand.links[palm].name + "' " + vec(hand.palm_normal->n_L),
         confidence_normal, normal_why);
 
+  // Opposed digits, one of them alone on its side of the closing axis: that one is the thumb
+  // (a thumb beside another digit has no side of its own to oppose from).
+  if (opposed && nf > 2) {
+    std::vector<int> along, against;
+    for (size_t i = 0; i < nf; ++i) {
+      const Eigen::Vector3d& m = closing_motion[i];
+      if (m.norm() < 1e-12) continue;
+      const double c = m.normalized().dot(opposition_W);
+      if (c >= kOpposingCosine) along.push_back(int(i));
+      if (c <= -kOpposingCosine) against.push_back(int(i));
+    }
+    int lone = -1;
+    if (along.size() == 1 && against.size() > 1) lone = along.front();
+    if (against.size() == 1 && along.size() > 1) lone = against.front();
+    if (lone >= 0 && lone != thumb && !fingers[lone].driven_elsewhere) {
+      const auto it = std::find_if(draft.guesses.begin(), draft.guesses.end(),
+                                   [](const DraftGuess& g) { return g.what == "thumb"; });
+      it->value = finger_name(hand, fingers[lone]);
+      it->confidence = std::max(it->confidence, 0.5);
+      it->why = "alone on its side of the opposed digits' closing axis; '" +
+                finger_name(hand, fingers[thumb]) + "' first: " + it->why;
+      thumb = lone;
+      others_tips = Eigen::Vector3d::Zero();
+      for (size_t i = 0; i < nf; ++i)
+        if (int(i) != thumb) others_tips += tips[i] / double(nf - 1);
+    }
+  }
+
   // Closing joints and their signs.
   const Eigen::Vector3d thumb_tip = tips[thumb];
   for (size_t i = 0; i < nf; ++i) {
