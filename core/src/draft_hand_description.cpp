@@ -70,6 +70,9 @@ constexpr double kPalmBetween = 1.0 / 3.0;
 constexpr double kAcrossClosingAxisCosine = 0.3;
 /// Two digits' roots stand apart (jaw to jaw) at least this far [m].
 constexpr double kMinRootsApart_m = 0.01;
+/// Confidence in a thumb found alone on its side of opposed digits, at least (the side is
+/// clear; which digit a user calls the thumb is not).
+constexpr double kLoneThumbConfidence = 0.5;
 
 struct DraftFinger {
   int root_joint = -1;
@@ -294,6 +297,7 @@ std::vector<int> test_plan_gcp_places(const HandModel& hand,
   PlanParams params;
   params.grasps = kTestAttempts;
   params.max_attempts = kTestAttempts;
+  params.fallback_attempts = 0;  // the cord planner's placement is what a place is judged by
   params.time_limit_s = kTestTimeLimit_s;
   params.quality.contact.soft_finger_radius_m = hand.soft_finger_radius_m;  // as `plan` does
   std::vector<std::vector<int>> found(shapes.size(), std::vector<int>(places.size(), 0));
@@ -738,7 +742,7 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
       const auto it = std::find_if(draft.guesses.begin(), draft.guesses.end(),
                                    [](const DraftGuess& g) { return g.what == "thumb"; });
       it->value = finger_name(hand, fingers[lone]);
-      it->confidence = std::max(it->confidence, 0.5);
+      it->confidence = std::max(it->confidence, kLoneThumbConfidence);
       it->why = "alone on its side of the opposed digits' closing axis; '" +
                 finger_name(hand, fingers[thumb]) + "' first: " + it->why;
       thumb = lone;

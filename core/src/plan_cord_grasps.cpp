@@ -149,20 +149,33 @@ PlanResult plan_cord_grasps(const Mesh& mesh, const HandModel& hand, HandObjectC
     const auto t0 = std::chrono::steady_clock::now();
     ctx->setup = prepare_hand(hand, collider);
     hand_s = internal::seconds_since(t0);
+  } else {
+    PlanStats setup;
+    ctx = internal::make_plan_context(mesh, hand, collider, params, setup);
+    hand_s = setup.setup_s;
   }
   const double after_exploration_s = internal::seconds_since(start) - explored_s;
-  PlanResult result = plan_cord_grasps_from_regions(
-      mesh, hand, collider, regions, params, explored_s, &order, cancel, ctx ? &*ctx : nullptr);
-  if (ctx) {
-    // The set-up's own time, partly beside the exploration; the wall time after the
-    // exploration (the wait for it, the hand's part) counts in the totals.
-    result.stats.setup_s = object_s + hand_s;
-    result.stats.total_s += after_exploration_s;
-    if (result.stats.first_force_closure_s)
-      *result.stats.first_force_closure_s += after_exploration_s;
+  PlanResult result = plan_cord_grasps_from_regions(mesh, hand, collider, regions, params,
+                                                    explored_s, &order, cancel, &*ctx);
+  // The set-up's own time, partly beside the exploration; the wall time after the exploration
+  // (the wait for it, the set-up's part) counts in the totals.
+  PlanStats& stats = result.stats;
+  stats.setup_s = object_s + hand_s;
+  stats.total_s += after_exploration_s;
+  if (stats.first_force_closure_s) *stats.first_force_closure_s += after_exploration_s;
+  const int wanted = std::max(1, params.grasps);
+  if (static_cast<int>(result.grasps.size()) < wanted && params.fallback_attempts > 0 &&
+      !stats.timed_out && !stats.interrupted) {
+    // Regions or attempts spent: the generic planner's sampled surface points, as many more.
+    const int before = stats.attempts;
+    stats.attempt_budget_reached = false;
+    internal::sample_surface_grasps(mesh, hand, collider, *ctx, params, params.fallback_attempts,
+                                    start, 0.0, cancel, result);
+    stats.sampled_attempts = stats.attempts - before;
+    stats.total_s = internal::seconds_since(start);
   }
   if (explored.hit_time_limit && static_cast<int>(result.grasps.size()) < params.grasps)
-    result.stats.timed_out = true;  // fewer regions than a faster machine would have found
+    stats.timed_out = true;  // fewer regions than a faster machine would have found
   return result;
 }
 

@@ -26,12 +26,22 @@ Eigen::Vector3d outward_face_normal(const Mesh& mesh, int tri, const Eigen::Vect
 PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
                                HandObjectCollider& collider, const PlanParams& params,
                                const CancelToken& cancel) {
-  using internal::seconds_since;
   const auto start = std::chrono::steady_clock::now();
   PlanResult result;
-  PlanStats& stats = result.stats;
-  const PlanContext ctx = internal::make_plan_context(mesh, hand, collider, params, stats);
+  const PlanContext ctx = internal::make_plan_context(mesh, hand, collider, params, result.stats);
+  internal::sample_surface_grasps(mesh, hand, collider, ctx, params, params.max_attempts, start,
+                                  0.0, cancel, result);
+  result.stats.total_s = internal::seconds_since(start);
+  return result;
+}
 
+namespace internal {
+
+void sample_surface_grasps(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
+                           const PlanContext& ctx, const PlanParams& params, int max_attempts,
+                           std::chrono::steady_clock::time_point start, double offset_s,
+                           const CancelToken& cancel, PlanResult& result) {
+  PlanStats& stats = result.stats;
   // Area-weighted triangle sampling.
   std::vector<double> areas(mesh.triangles.size(), 0.0);
   for (size_t i = 0; i < mesh.triangles.size(); ++i) {
@@ -45,12 +55,13 @@ PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
   std::mt19937_64 rng(params.seed);
 
   const int wanted = std::max(1, params.grasps);
+  const int attempts_end = stats.attempts + std::max(0, max_attempts);
   while (static_cast<int>(result.grasps.size()) < wanted) {
-    if (stats.attempts >= params.max_attempts) {
+    if (stats.attempts >= attempts_end) {
       stats.attempt_budget_reached = true;
       break;
     }
-    if (seconds_since(start) > params.time_limit_s) {
+    if (offset_s + seconds_since(start) > params.time_limit_s) {
       stats.timed_out = true;
       break;
     }
@@ -86,11 +97,11 @@ PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
       ++stats.similar;
       continue;
     }
-    if (!stats.first_force_closure_s) stats.first_force_closure_s = seconds_since(start);
+    if (!stats.first_force_closure_s) stats.first_force_closure_s = offset_s + seconds_since(start);
     result.grasps.push_back(std::move(grasp));
   }
-  stats.total_s = seconds_since(start);
-  return result;
 }
+
+}  // namespace internal
 
 }  // namespace cordgrasp

@@ -2,6 +2,7 @@
 // core-internal helpers shared by plan_cord_grasps and plan_generic_grasps.
 #include <chrono>
 
+#include "cordgrasp/core/cancel_token.h"
 #include "cordgrasp/core/grasp_plan.h"
 #include "cordgrasp/core/mesh.h"
 #include "cordgrasp/core/plan_context.h"
@@ -22,5 +23,15 @@ PlanContext make_plan_context(const Mesh& mesh, const HandModel& hand, HandObjec
 bool attempt_grasp(const HandModel& hand, HandObjectCollider& collider, const PlanContext& ctx,
                    const PlanParams& params, const Eigen::Isometry3d& X_OG_start,
                    double approach_travel_m, PlanStats& stats, Grasp& grasp);
+
+/// The generic planner's attempts (plan_generic_grasps()): area-weighted random surface points
+/// drawn with params.seed, the GCP there along the inward normal at a random roll. Appends
+/// force-closure grasps that differ from those in `result` until it holds params.grasps, or
+/// `max_attempts` more attempts, params.time_limit_s (`offset_s` + the time since `start`) or
+/// `cancel`; counts into result.stats.
+void sample_surface_grasps(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
+                           const PlanContext& ctx, const PlanParams& params, int max_attempts,
+                           std::chrono::steady_clock::time_point start, double offset_s,
+                           const CancelToken& cancel, PlanResult& result);
 
 }  // namespace cordgrasp::internal

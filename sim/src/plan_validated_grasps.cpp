@@ -63,7 +63,9 @@ BulletColliderParams collider_params(int threads) {
 /// Hands out the planner's force-closure candidates one at a time, best first: the cord planner
 /// continues in its region order after the last candidate's region and, once every region is
 /// processed, explores again with the next seed (region_rank is then the rank in that
-/// exploration); the generic planner is called again with the next seed.
+/// exploration), and once the explorations are spent, sampled surface points as the generic
+/// planner makes them (PlanParams::fallback_attempts per call); the generic planner is called
+/// again with the next seed.
 class CandidateSource {
  public:
   CandidateSource(const Mesh& mesh, const HandModel& hand, PlannerKind planner,
@@ -93,10 +95,14 @@ class CandidateSource {
     PlanParams params = plan_;
     params.grasps = 1;
     params.time_limit_s = time_left_s;
-    if (planner_ == PlannerKind::kCord) {
+    if (planner_ == PlannerKind::kCord && !sampling_) {
       // Every region processed: explore again with the next seed (new regions), a few times.
       while (order_.empty() && explorations_ < kMaxExplorations) explore(time_left_s, stats);
-      if (order_.empty()) return std::nullopt;
+      if (order_.empty()) {
+        if (plan_.fallback_attempts <= 0) return std::nullopt;
+        sampling_ = true;  // then the generic planner's sampled surface points
+        return next(time_left_s, stats);
+      }
       if (!context_) {  // once for every candidate
         const auto start = Clock::now();
         context_ = make_plan_context(mesh_, hand_, *collider_, plan_);
@@ -120,8 +126,10 @@ class CandidateSource {
     }
     params.seed = plan_.seed + calls_++;
     params.quality.seed = params.seed;
+    if (sampling_) params.max_attempts = plan_.fallback_attempts;
     const PlanResult r = plan_generic_grasps(mesh_, hand_, *collider_, params, cancel_);
     add_stats(stats, r.stats);
+    if (sampling_) stats.sampled_attempts += r.stats.attempts;
     if (r.grasps.empty()) return std::nullopt;
     return r.grasps.front();
   }
@@ -160,6 +168,7 @@ class CandidateSource {
   int offset_ = 0;          ///< regions processed before order_.front()
   double exploration_s_ = 0.0;
   std::uint64_t calls_ = 0;
+  bool sampling_ = false;  ///< cord: every exploration spent, PlanParams::fallback_attempts
 };
 
 Outcome phase_outcome(const SimResult& r, const char* name) {

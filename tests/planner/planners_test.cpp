@@ -100,6 +100,51 @@ TEST(PlanCordGrasps, NoRegionsGiveNoGraspAndNoCrash) {
   EXPECT_FALSE(plan.stats.first_force_closure_s.has_value());
 }
 
+TEST(PlanCordGrasps, SpentRegionsGoOnAtTheGenericPlannersSampledPoints) {
+  const Mesh box = make_box_mesh({0.04, 0.05, 0.06});
+  const HandModel hand = test::make_three_finger_hand();
+  auto collider = make_bullet_hand_collider(hand, box);
+  PlanParams params;
+  params.grasps = 2;
+  params.seed = 3;
+  params.time_limit_s = 30.0;
+  params.max_attempts = 0;  // the regions' attempts spent at once
+  const PlanResult plan = plan_cord_grasps(box, hand, *collider, CordParams{}, params);
+  PlanParams generic = params;
+  generic.max_attempts = params.fallback_attempts;
+  const PlanResult sampled = plan_generic_grasps(box, hand, *collider, generic);
+  ASSERT_EQ(plan.grasps.size(), 2u);
+  ASSERT_EQ(sampled.grasps.size(), 2u);
+  EXPECT_EQ(plan.stats.regions_processed, 0);
+  EXPECT_EQ(plan.stats.sampled_attempts, plan.stats.attempts);
+  EXPECT_EQ(plan.stats.attempts, sampled.stats.attempts);
+  EXPECT_FALSE(plan.stats.attempt_budget_reached);
+  for (size_t i = 0; i < 2; ++i) {
+    EXPECT_FALSE(plan.grasps[i].region_rank.has_value());
+    EXPECT_FALSE(plan.grasps[i].region.has_value());
+    EXPECT_TRUE(plan.grasps[i].X_OG.isApprox(sampled.grasps[i].X_OG, 0.0));
+  }
+
+  params.fallback_attempts = 0;  // the paper's planner
+  const PlanResult paper = plan_cord_grasps(box, hand, *collider, CordParams{}, params);
+  EXPECT_TRUE(paper.grasps.empty());
+  EXPECT_EQ(paper.stats.attempts, 0);
+  EXPECT_EQ(paper.stats.sampled_attempts, 0);
+  EXPECT_TRUE(paper.stats.attempt_budget_reached);
+}
+
+TEST(PlanCordGrasps, RegionsThatGiveTheGraspsSampleNothing) {
+  const Mesh cylinder = make_cylinder_mesh(0.015, 0.3);
+  const HandModel hand = test::make_three_finger_hand();
+  auto collider = make_bullet_hand_collider(hand, cylinder);
+  PlanParams params;
+  params.time_limit_s = 30.0;
+  const PlanResult plan = plan_cord_grasps(cylinder, hand, *collider, CordParams{}, params);
+  ASSERT_EQ(plan.grasps.size(), 1u);
+  EXPECT_TRUE(plan.grasps[0].region_rank.has_value());
+  EXPECT_EQ(plan.stats.sampled_attempts, 0);
+}
+
 TEST(OutwardFaceNormal, FlipsInwardWoundTrianglesByRayParity) {
   Mesh box = make_box_mesh(Eigen::Vector3d::Constant(0.05));
   for (size_t i = 0; i < box.triangles.size(); i += 2)

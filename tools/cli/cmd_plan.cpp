@@ -53,6 +53,9 @@ void print_summary(const PlanDocument& doc, const HandModel& hand, const std::st
       "retreat\n",
       s.attempts, s.force_closure, s.not_force_closure, s.one_contact, s.no_contact,
       s.cannot_retreat);
+  if (s.sampled_attempts > 0)
+    std::cout << format("  %d of the attempts at sampled surface points (the regions' spent)\n",
+                        s.sampled_attempts);
   std::cout << format("  finger stage %.3f s, quality %.3f s, total %.3f s", s.finger_s,
                       s.quality_s, s.total_s);
   if (s.first_force_closure_s)
@@ -64,6 +67,8 @@ void print_summary(const PlanDocument& doc, const HandModel& hand, const std::st
                         g.alpha_rad * 180.0 / M_PI, g.contacts.size());
     if (g.region_rank && g.chi_m2)
       std::cout << format(", region %d (chi %.3g m^2)", *g.region_rank, *g.chi_m2);
+    else if (doc.planner == PlannerKind::kCord)
+      std::cout << ", sampled surface point";
     if (doc.validation) {
       const GraspValidation& v = doc.validation->grasps[i];
       std::cout << format("; held in %d / %d trials, squeeze shift %.0f mm", v.held_trials,

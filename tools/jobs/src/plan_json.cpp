@@ -170,6 +170,7 @@ nlohmann::json stats_json(const PlanStats& s) {
           {"cannot_retreat", s.cannot_retreat},
           {"not_force_closure", s.not_force_closure},
           {"similar", s.similar},
+          {"sampled_attempts", s.sampled_attempts},
           {"setup_s", s.setup_s},
           {"exploration_s", s.exploration_s},
           {"finger_s", s.finger_s},
@@ -192,6 +193,7 @@ PlanStats stats_from_json(const nlohmann::json& j) {
   s.cannot_retreat = j.value("cannot_retreat", 0);
   s.not_force_closure = j.value("not_force_closure", 0);
   s.similar = j.value("similar", 0);
+  s.sampled_attempts = j.value("sampled_attempts", 0);
   s.setup_s = j.value("setup_s", 0.0);
   s.exploration_s = j.value("exploration_s", 0.0);
   s.finger_s = j.value("finger_s", 0.0);
@@ -351,6 +353,10 @@ nlohmann::json read_plan_json(const std::string& path) {
       v["min_hold_probability"] = defaults.min_hold_probability;
     if (!v.contains("max_draws")) v["max_draws"] = defaults.max_draws;
   }
+  // Plans written before the cord planner's fallback were planned without it.
+  if (j.contains("parameters") && j["parameters"].is_object() &&
+      !j["parameters"].contains("fallback_attempts"))
+    j["parameters"]["fallback_attempts"] = 0;
   // A relative hand or object path naming a file beside the plan is taken from the plan's
   // folder (a plan moved with its files); else it stays (a shipped name, or from the cwd).
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();

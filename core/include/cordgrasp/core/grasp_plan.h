@@ -29,13 +29,19 @@ struct PlanParams {
   /// Safety net: wall-clock cap of the whole plan, exploration included [s]. When it fires the
   /// result depends on the machine's speed (PlanStats::timed_out).
   double time_limit_s = 60.0;
-  std::uint64_t seed = 1;      ///< generic planner sampling (the cord planner's is CordParams')
+  /// Surface sampling (the generic planner, the cord planner's fallback); the cord
+  /// exploration's seed is CordParams'.
+  std::uint64_t seed = 1;
   FingerParams finger;         ///< finger stage (docs/algorithm.md §7)
   QualityParams quality;       ///< force closure and ε (docs/algorithm.md §8)
   bool roll_retry = true;      ///< cord: retry a failed region rolled 180° about z
   /// The stopping rule: at most this many finger-stage attempts (both planners), so a seed
   /// gives the same plan on any machine. The cord planner also stops when its regions run out.
   int max_attempts = 500;
+  /// cord: when its regions or max_attempts are spent with fewer than `grasps` grasps, up to
+  /// this many more attempts at sampled surface points, as the generic planner makes them (a
+  /// hand whose digits do not suit the regions' placement); 0 = none (the paper's planner).
+  int fallback_attempts = 500;
   /// Both planners return only grasps that differ pairwise (validated planning accepts so).
   DiversityParams diversity;
 
@@ -44,7 +50,8 @@ struct PlanParams {
   void Serialize(Archive* a) {
     visit_fields(a, CORDGRASP_NVP(grasps), CORDGRASP_NVP(time_limit_s), CORDGRASP_NVP(seed),
                  CORDGRASP_NVP(finger), CORDGRASP_NVP(quality), CORDGRASP_NVP(roll_retry),
-                 CORDGRASP_NVP(max_attempts), CORDGRASP_NVP(diversity));
+                 CORDGRASP_NVP(max_attempts), CORDGRASP_NVP(fallback_attempts),
+                 CORDGRASP_NVP(diversity));
   }
 };
 
@@ -59,6 +66,7 @@ struct PlanStats {
   int cannot_retreat = 0;      ///< attempts where the hand could not get collision-free
   int not_force_closure = 0;   ///< attempts with contacts but no force closure
   int similar = 0;             ///< force-closure grasps not returned: too like an earlier one
+  int sampled_attempts = 0;    ///< cord: attempts at sampled surface points (fallback_attempts)
   double setup_s = 0.0;        ///< hand setup and object wrench-space preparation
   double exploration_s = 0.0;  ///< cord exploration
   double finger_s = 0.0;       ///< all finger-stage runs

@@ -46,7 +46,10 @@ std::vector<int> cord_region_order(const std::vector<GraspRegion>& regions, doub
                                    const CordParams& cord);
 
 /// The cord-driven planner (paper §III–§V): explore_cords() with W_palm = palm_width(hand), then
-/// plan_cord_grasps_from_regions() in cord_region_order(). The exploration shares
+/// plan_cord_grasps_from_regions() in cord_region_order(); with fewer than params.grasps grasps
+/// when the regions or params.max_attempts are spent, up to params.fallback_attempts more at
+/// the generic planner's sampled surface points (plan_generic_grasps(), params.seed; grasps
+/// without a region, PlanStats::sampled_attempts). The exploration shares
 /// params.time_limit_s (its own cap is min(cord.time_limit_s, params.time_limit_s)).
 /// `exploration`, when given, receives its stats; `cancel` stops the finger stage early (the
 /// exploration runs to its end). `threads`: explore_cords()'s, and above 1 the object's part of
