@@ -124,14 +124,23 @@ class CandidateSource {
       offset_ += rank + 1;
       return g;
     }
-    params.seed = plan_.seed + calls_++;
-    params.quality.seed = params.seed;
-    if (sampling_) params.max_attempts = plan_.fallback_attempts;
-    const PlanResult r = plan_generic_grasps(mesh_, hand_, *collider_, params, cancel_);
-    add_stats(stats, r.stats);
-    if (sampling_) stats.sampled_attempts += r.stats.attempts;
-    if (r.grasps.empty()) return std::nullopt;
-    return r.grasps.front();
+    const double cpu_start = process_cpu_s();
+    for (;;) {
+      params.seed = plan_.seed + calls_++;
+      params.quality.seed = params.seed;
+      if (sampling_) params.max_attempts = plan_.fallback_attempts;
+      const PlanResult r = plan_generic_grasps(mesh_, hand_, *collider_, params, cancel_);
+      add_stats(stats, r.stats);
+      if (sampling_) stats.sampled_attempts += r.stats.attempts;
+      if (!r.grasps.empty()) return r.grasps.front();
+      // cord: a batch of sampled points without a candidate is followed by others while the
+      // budget (CPU, as validated planning counts it) lasts; the generic planner's empty call
+      // ends it
+      const double left_s = time_left_s - (process_cpu_s() - cpu_start);
+      if (!sampling_ || r.stats.interrupted || left_s <= 0.0 || cancel_.cancelled())
+        return std::nullopt;
+      params.time_limit_s = left_s;
+    }
   }
 
  private:
