@@ -56,13 +56,19 @@ bench() {  # bench NAME ARGS...: one cordgrasp bench into OUT/NAME, command logg
 }
 start=$(date +%s)
 
+# Each setting is a planner settings file (docs/algorithm.md §10c) in OUT/settings. Every
+# cord run is the paper's planner: no sampled surface points after its regions
+# (fallback_attempts 0, docs/algorithm.md §10).
+mkdir -p "$OUT/settings"
+paper="$OUT/settings/paper.yaml"
+echo "fallback_attempts: 0" > "$paper"
+
 # Fig. 11: alpha and exploration time against the number of sets, with / without local
 # improvement, on the long cylinder (the shipped one: 35 mm x 250 mm), Schunk SAH.
-# Each setting is a planner settings file (docs/algorithm.md §10c) in OUT/settings.
-mkdir -p "$OUT/settings"
 for sets in 5 10 20 40; do
-  echo "cord: {sets: $sets}" > "$OUT/settings/sets${sets}_li.yaml"
-  echo "cord: {sets: $sets, local_improvement: false}" > "$OUT/settings/sets${sets}_noli.yaml"
+  echo "{fallback_attempts: 0, cord: {sets: $sets}}" > "$OUT/settings/sets${sets}_li.yaml"
+  echo "{fallback_attempts: 0, cord: {sets: $sets, local_improvement: false}}" \
+    > "$OUT/settings/sets${sets}_noli.yaml"
   for li in li noli; do
     bench "fig11_sets${sets}_$li" --hands schunk_sah --objects "$SHIPPED/long_cylinder.obj" \
       --planners cord --repeats "$FIG11_RUNS" --settings "$OUT/settings/sets${sets}_$li.yaml" \
@@ -78,19 +84,19 @@ for o in "${FIG12_OBJECTS[@]}"; do fig12+=("$KIT/$o.obj"); done
 for sc in "${KIT_SCALES[@]}"; do
   tag=""; [ "$sc" = 1 ] || tag="_x$sc"
   bench "fig12_cord$tag" --hands schunk_sah --objects "${fig12[@]}" --planners cord \
-    --repeats 10 --scale "$sc" --tests none
+    --repeats 10 --scale "$sc" --tests none --settings "$paper"
   for b in "${GENERIC_BUDGETS[@]}"; do
     bench "fig12_generic_${b}s$tag" --hands schunk_sah --objects "${fig12[@]}" \
       --planners generic --repeats 10 --time-limit "$b" --scale "$sc" --tests none --no-sheets
   done
   bench "fig13$tag" --hands schunk_sah --objects "$KIT" --planners cord --repeats 10 \
-    --scale "$sc" --tests none
+    --scale "$sc" --tests none --settings "$paper"
 done
 
 # Fig. 17 stand-in: complex objects, cord then generic with the paper's protocol (generic
 # timeout = the cord planner's largest time on that object).
 bench fig17_cord --hands schunk_sah --objects "${FIG17_OBJECTS[@]}" --planners cord \
-  --repeats 10 --tests none
+  --repeats 10 --tests none --settings "$paper"
 for obj in "${FIG17_OBJECTS[@]}"; do
   name="$(basename "$obj" .obj)"
   limit="$(awk -F, -v o="$name" 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
@@ -107,7 +113,7 @@ for set in shipped kit kit_x2 ycb; do
   case $set in shipped) dir="$SHIPPED" ;; kit) dir="$KIT" ;; kit_x2) dir="$KIT"; sc=2 ;;
                ycb) dir="$YCB" ;; esac
   bench "physics_$set" --hands "$PHYS_HANDS" --objects "$dir" --planners cord,generic \
-    --repeats "$PHYS_REPEATS" --scale "$sc" --tests lift,shake --no-sheets
+    --repeats "$PHYS_REPEATS" --scale "$sc" --tests lift,shake --no-sheets --settings "$paper"
 done
 
 end=$(date +%s)
