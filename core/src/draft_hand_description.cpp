@@ -656,6 +656,7 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   // axis. Otherwise the meeting point must lie in front of the palm along the flexion normal.
   bool opposed = false;
   Eigen::Vector3d opposition_W = Eigen::Vector3d::Zero();
+  hand_draft::Opposition opposition;  ///< the digits on either side, when opposed
   if (meet.found) {
     const Eigen::Vector3d w = meet.p_W - roots_c;
     // The closing axis: the flexion, or without flexion joints the digits' main closing motion.
@@ -670,12 +671,13 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
         o.palm_between <= 1.0 - kPalmBetween && n.norm() > 1e-6) {
       opposed = true;
       opposition_W = axis_W;
+      opposition = o;
       confidence_normal = std::min(confidence_normal, n.norm() / w.norm());
       normal_W = n.normalized();
-      normal_why = std::to_string(o.along) + " digits close towards " + std::to_string(o.against) +
-                   " across the palm between them: from the digits' roots to where " +
-                   meets.str() + " (" + num(std::round(w.norm() * 1000)) +
-                   " mm), across that closing axis";
+      normal_why = std::to_string(o.along.size()) + " digits close towards " +
+                   std::to_string(o.against.size()) +
+                   " across the palm between them: from the digits' roots to where " + meets.str() +
+                   " (" + num(std::round(w.norm() * 1000)) + " mm), across that closing axis";
       // Three or more roots spread over the palm's face span it: its normal is theirs, on the
       // side where the fingertips meet (digits of unequal lengths meet off the roots' centre).
       const hand_draft::RootsPlane plane = hand_draft::roots_plane(roots);
@@ -727,14 +729,8 @@ HandDraft draft_hand_description(const std::string& urdf_path, const std::string
   // Opposed digits, one of them alone on its side of the closing axis: that one is the thumb
   // (a thumb beside another digit has no side of its own to oppose from).
   if (opposed && nf > 2) {
-    std::vector<int> along, against;
-    for (size_t i = 0; i < nf; ++i) {
-      const Eigen::Vector3d& m = closing_motion[i];
-      if (m.norm() < 1e-12) continue;
-      const double c = m.normalized().dot(opposition_W);
-      if (c >= kOpposingCosine) along.push_back(int(i));
-      if (c <= -kOpposingCosine) against.push_back(int(i));
-    }
+    const std::vector<int>& along = opposition.along;
+    const std::vector<int>& against = opposition.against;
     int lone = -1;
     if (along.size() == 1 && against.size() > 1) lone = along.front();
     if (against.size() == 1 && along.size() > 1) lone = against.front();

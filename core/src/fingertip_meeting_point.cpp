@@ -129,16 +129,16 @@ Opposition opposition_across(const Eigen::Vector3d& axis_W,
     if (m.norm() < 1e-12) continue;
     const double c = m.normalized().dot(axis_W);
     if (c >= min_cosine) {
-      ++out.along;
+      out.along.push_back(int(i));
       along += roots_W[i];
     } else if (c <= -min_cosine) {
-      ++out.against;
+      out.against.push_back(int(i));
       against += roots_W[i];
     }
   }
-  if (out.along == 0 || out.against == 0) return out;
-  along /= out.along;
-  against /= out.against;
+  if (out.along.empty() || out.against.empty()) return out;
+  along /= double(out.along.size());
+  against /= double(out.against.size());
   const Eigen::Vector3d apart = against - along;
   const double gap = apart.dot(axis_W);
   if (apart.norm() < 1e-12 || std::abs(gap) < 1e-12) return out;

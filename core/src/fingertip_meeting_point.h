@@ -45,8 +45,8 @@ MeetingPoint fingertip_meeting_point(const HandModel& hand, const Eigen::VectorX
 /// How the digits close relative to an axis: those whose closing motion runs along it against
 /// those running against it.
 struct Opposition {
-  int along = 0;    ///< digits whose closing motion has cosine >= min_cosine with the axis
-  int against = 0;  ///< digits whose closing motion has cosine <= -min_cosine
+  std::vector<int> along;    ///< digits whose closing motion has cosine >= min_cosine with the axis
+  std::vector<int> against;  ///< digits whose closing motion has cosine <= -min_cosine
   /// Cosine between the axis and the vector from the along digits' roots' centroid to the
   /// against digits' (0 when either group is empty): 1 when they face each other along it.
   double roots_apart_cosine = 0.0;

@@ -64,8 +64,8 @@ BulletColliderParams collider_params(int threads) {
 /// continues in its region order after the last candidate's region and, once every region is
 /// processed, explores again with the next seed (region_rank is then the rank in that
 /// exploration), and once the explorations are spent, sampled surface points as the generic
-/// planner makes them (PlanParams::fallback_attempts per call); the generic planner is called
-/// again with the next seed.
+/// planner makes them, in batches of PlanParams::fallback_attempts until the time left is
+/// spent; the generic planner is called again with the next seed.
 class CandidateSource {
  public:
   CandidateSource(const Mesh& mesh, const HandModel& hand, PlannerKind planner,

@@ -258,6 +258,19 @@ TEST(PlanJson, Version2PlansAreUpgradedInOneStep) {
   std::filesystem::remove(path);
 }
 
+TEST(PlanJson, PlansWrittenBeforeTheFallbackReadAsPlannedWithoutIt) {
+  const HandModel hand = load_hand("parallel_gripper");
+  const PlanDocument doc = sample_plan(hand);
+  nlohmann::json current = plan_to_json(doc, hand);
+  EXPECT_EQ(current["parameters"]["fallback_attempts"], PlanParams{}.fallback_attempts);
+  current["parameters"].erase("fallback_attempts");
+  const std::string path = temp_path("before_fallback.json");
+  std::ofstream(path) << current.dump();
+  const PlanDocument back = plan_from_json(read_plan_json(path), hand, path);
+  EXPECT_EQ(back.params.fallback_attempts, 0);
+  std::filesystem::remove(path);
+}
+
 TEST(PlanJson, PosesReadBackBitForBit) {
   const HandModel hand = load_hand("parallel_gripper");
   PlanDocument doc = sample_plan(hand);

@@ -88,14 +88,14 @@ TEST(FingertipMeetingPoint, TwoCurlingDigitsMeetAboveTheMidPlaneWhereTheClosedFo
   EXPECT_NEAR(std::abs(axis.x()), 1.0, 0.05) << axis.transpose();
   const Opposition o = opposition_across(Eigen::Vector3d::UnitX(), roots, motion,
                                          Eigen::Vector3d::Zero(), 0.5);
-  EXPECT_EQ(o.along, 1);
-  EXPECT_EQ(o.against, 1);
+  EXPECT_EQ(o.along, std::vector<int>{0});
+  EXPECT_EQ(o.against, std::vector<int>{1});
   EXPECT_NEAR(o.roots_apart_cosine, 1.0, 1e-12);
   EXPECT_NEAR(o.palm_between, 0.5, 1e-12);
   // Along z (the palm normal) nobody closes either way: no opposition.
   const Opposition none = opposition_across(Eigen::Vector3d::UnitZ(), roots, motion,
                                             Eigen::Vector3d::Zero(), 0.5);
-  EXPECT_EQ(none.along + none.against, 0);
+  EXPECT_TRUE(none.along.empty() && none.against.empty());
 }
 
 TEST(FingertipMeetingPoint, DigitsThatDoNotCloseHaveNoMeetingPoint) {

@@ -54,7 +54,7 @@ void print_summary(const PlanDocument& doc, const HandModel& hand, const std::st
       s.attempts, s.force_closure, s.not_force_closure, s.one_contact, s.no_contact,
       s.cannot_retreat);
   if (s.sampled_attempts > 0)
-    std::cout << format("  %d of the attempts at sampled surface points (the regions' spent)\n",
+    std::cout << format("  %d of them at sampled surface points, after the regions\n",
                         s.sampled_attempts);
   std::cout << format("  finger stage %.3f s, quality %.3f s, total %.3f s", s.finger_s,
                       s.quality_s, s.total_s);
