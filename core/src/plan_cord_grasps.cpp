@@ -132,7 +132,7 @@ PlanResult plan_cord_grasps(const Mesh& mesh, const HandModel& hand, HandObjectC
   if (threads > 1)
     object = std::async(std::launch::async, [&]() {
       const auto t0 = std::chrono::steady_clock::now();
-      PlanContext ctx = object_plan_context(mesh, params);
+      PlanContext ctx = object_plan_context(mesh, params, collider.object_bvh());
       object_s = internal::seconds_since(t0);
       return ctx;
     });

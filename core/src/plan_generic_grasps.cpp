@@ -1,6 +1,7 @@
 #include "cordgrasp/core/plan_generic_grasps.h"
 
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include "cordgrasp/core/mesh_properties.h"
@@ -25,10 +26,12 @@ Eigen::Vector3d outward_face_normal(const Mesh& mesh, int tri, const Eigen::Vect
 
 PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
                                HandObjectCollider& collider, const PlanParams& params,
-                               const CancelToken& cancel) {
+                               const CancelToken& cancel, const PlanContext* context) {
   const auto start = std::chrono::steady_clock::now();
   PlanResult result;
-  const PlanContext ctx = internal::make_plan_context(mesh, hand, collider, params, result.stats);
+  std::optional<PlanContext> own;
+  if (!context) own = internal::make_plan_context(mesh, hand, collider, params, result.stats);
+  const PlanContext& ctx = context ? *context : *own;
   internal::sample_surface_grasps(mesh, hand, collider, ctx, params, params.max_attempts, start,
                                   0.0, cancel, result);
   result.stats.total_s = internal::seconds_since(start);

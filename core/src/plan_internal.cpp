@@ -1,11 +1,19 @@
 #include "plan_internal.h"
 
+#include <cmath>
+
 #include "cordgrasp/core/candidate_measures.h"
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/skewness.h"
 
 namespace cordgrasp::internal {
+
+bool touched_from_inside(const WindingNumberTree& solid, const std::vector<Contact>& contacts) {
+  for (const Contact& c : contacts)
+    if (std::abs(winding_number(solid, c.p_O + kInsideProbeOffsetM * c.n_O)) >= 0.5) return true;
+  return false;
+}
 
 PlanContext make_plan_context(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
                               const PlanParams& params, PlanStats& stats) {
@@ -36,6 +44,10 @@ bool attempt_grasp(const HandModel& hand, HandObjectCollider& collider, const Pl
     case FingerStatus::kCannotRetreat:
       ++stats.cannot_retreat;
       return false;
+  }
+  if (ctx.solid && touched_from_inside(*ctx.solid, fr.contacts)) {
+    ++stats.inside_object;
+    return false;
   }
   const auto t_quality = std::chrono::steady_clock::now();
   const GraspQuality quality =

@@ -1,6 +1,7 @@
 #pragma once
 // core-internal helpers shared by plan_cord_grasps and plan_generic_grasps.
 #include <chrono>
+#include <vector>
 
 #include "cordgrasp/core/cancel_token.h"
 #include "cordgrasp/core/grasp_plan.h"
@@ -18,8 +19,19 @@ inline double seconds_since(std::chrono::steady_clock::time_point start) {
 PlanContext make_plan_context(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
                               const PlanParams& params, PlanStats& stats);
 
-/// Runs the finger stage from X_OG_start, then the quality check; counts the outcome in
-/// `stats`. Returns true and fills `grasp` when the grasp is force-closure.
+/// How far outside the surface, along a contact's normal (object → link), the link is looked
+/// for: a link that touched the surface from inside lies inside the solid there [m]. Thinner
+/// than any finger, well beyond the contact tolerance.
+constexpr double kInsideProbeOffsetM = 1e-3;
+
+/// True when a contact's link side (kInsideProbeOffsetM along its normal) lies inside the
+/// solid (|winding number| ≥ 0.5): a link that started inside a closed object, or touched a
+/// face inside another component, touches the surface from within.
+bool touched_from_inside(const WindingNumberTree& solid, const std::vector<Contact>& contacts);
+
+/// Runs the finger stage from X_OG_start, the inside test of its contacts (closed meshes),
+/// then the quality check; counts the outcome in `stats`. Returns true and fills `grasp` when
+/// the grasp is force-closure.
 bool attempt_grasp(const HandModel& hand, HandObjectCollider& collider, const PlanContext& ctx,
                    const PlanParams& params, const Eigen::Isometry3d& X_OG_start,
                    double approach_travel_m, PlanStats& stats, Grasp& grasp);

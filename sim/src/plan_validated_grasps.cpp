@@ -48,6 +48,7 @@ void add_stats(PlanStats& total, const PlanStats& s) {
   total.one_contact += s.one_contact;
   total.cannot_retreat += s.cannot_retreat;
   total.not_force_closure += s.not_force_closure;
+  total.inside_object += s.inside_object;
   total.similar += s.similar;
   total.setup_s += s.setup_s;
   total.finger_s += s.finger_s;
@@ -92,6 +93,11 @@ class CandidateSource {
   /// The next candidate, or nullopt when the planner has none left within `time_left_s`.
   std::optional<Grasp> next(double time_left_s, PlanStats& stats) {
     if (time_left_s <= 0.0 || cancel_.cancelled()) return std::nullopt;
+    if (!context_) {  // once for every candidate, of either planner
+      const auto start = Clock::now();
+      context_ = make_plan_context(mesh_, hand_, *collider_, plan_);
+      stats.setup_s += seconds_since(start);
+    }
     PlanParams params = plan_;
     params.grasps = 1;
     params.time_limit_s = time_left_s;
@@ -102,11 +108,6 @@ class CandidateSource {
         if (plan_.fallback_attempts <= 0) return std::nullopt;
         sampling_ = true;  // then the generic planner's sampled surface points
         return next(time_left_s, stats);
-      }
-      if (!context_) {  // once for every candidate
-        const auto start = Clock::now();
-        context_ = make_plan_context(mesh_, hand_, *collider_, plan_);
-        stats.setup_s += seconds_since(start);
       }
       const PlanResult r = plan_cord_grasps_from_regions(mesh_, hand_, *collider_, regions_, params,
                                                          0.0, &order_, cancel_, &*context_);
@@ -129,7 +130,8 @@ class CandidateSource {
       params.seed = plan_.seed + calls_++;
       params.quality.seed = params.seed;
       if (sampling_) params.max_attempts = plan_.fallback_attempts;
-      const PlanResult r = plan_generic_grasps(mesh_, hand_, *collider_, params, cancel_);
+      const PlanResult r =
+          plan_generic_grasps(mesh_, hand_, *collider_, params, cancel_, &*context_);
       add_stats(stats, r.stats);
       if (sampling_) stats.sampled_attempts += r.stats.attempts;
       if (!r.grasps.empty()) return r.grasps.front();
@@ -168,7 +170,7 @@ class CandidateSource {
   CancelToken cancel_;
   int threads_;  ///< the exploration's scans
   std::unique_ptr<HandObjectCollider> collider_;
-  std::optional<PlanContext> context_;        ///< made at the first cord candidate
+  std::optional<PlanContext> context_;        ///< made at the first candidate
   std::optional<DrawnPoseCloser> closer_;     ///< made at the first hold test
   static constexpr int kMaxExplorations = 4;  ///< the first and three with later seeds
   int explorations_ = 0;

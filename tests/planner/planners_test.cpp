@@ -88,7 +88,42 @@ TEST(PlanCordGrasps, CountsBadCasesAndKeepsGoing) {
   EXPECT_EQ(plan.stats.attempts, 3);  // region 0 as is and rolled, then region 1
   EXPECT_EQ(plan.stats.attempts, plan.stats.force_closure + plan.stats.no_contact +
                                      plan.stats.one_contact + plan.stats.cannot_retreat +
-                                     plan.stats.not_force_closure);
+                                     plan.stats.not_force_closure + plan.stats.inside_object);
+}
+
+TEST(PlanCordGrasps, ContactsTouchedFromInsideAClosedObjectAreNoGrasp) {
+  // The hand placed inside a closed box crosses no surface: it approaches the wall from within
+  // and closes its fingers on it. Those contacts are rejected (inside_object); the same box
+  // without its far face is open, has no inside, and the same attempts are judged as usual.
+  const Mesh closed = make_box_mesh(Eigen::Vector3d::Constant(0.4));
+  Mesh open = closed;
+  open.triangles.clear();
+  for (const Eigen::Vector3i& t : closed.triangles) {
+    bool far_face = true;
+    for (int k = 0; k < 3; ++k) far_face = far_face && closed.vertices[t[k]].x() < -0.19;
+    if (!far_face) open.triangles.push_back(t);
+  }
+  ASSERT_EQ(open.triangles.size(), closed.triangles.size() - 2);
+  GraspRegion within;
+  within.p1 = {0.0, 0.0, 0.0};
+  within.p_l = {0.1, 0.03, 0.0};
+  within.p_r = {0.1, -0.03, 0.0};
+  within.p_m = {0.1, 0.0, 0.0};
+  within.normal = Eigen::Vector3d::UnitZ();
+  within.chi_m2 = 1e-4;
+  const HandModel hand = test::make_three_finger_hand();
+  PlanParams params;
+  params.fallback_attempts = 0;
+  auto in_closed = make_bullet_hand_collider(hand, closed);
+  const PlanResult a = plan_cord_grasps_from_regions(closed, hand, *in_closed, {within}, params);
+  EXPECT_TRUE(a.grasps.empty());
+  EXPECT_GT(a.stats.inside_object, 0);
+  EXPECT_EQ(a.stats.attempts, a.stats.inside_object + a.stats.no_contact + a.stats.one_contact);
+  auto in_open = make_bullet_hand_collider(hand, open);
+  const PlanResult b = plan_cord_grasps_from_regions(open, hand, *in_open, {within}, params);
+  EXPECT_EQ(b.stats.inside_object, 0);
+  EXPECT_EQ(b.stats.attempts, a.stats.attempts);
+  EXPECT_EQ(b.stats.force_closure + b.stats.not_force_closure, a.stats.inside_object);
 }
 
 TEST(PlanCordGrasps, NoRegionsGiveNoGraspAndNoCrash) {
@@ -193,7 +228,7 @@ TEST(PlanGenericGrasps, FindsForceClosureGraspsOnABox) {
   EXPECT_GE(plan.stats.attempts, 3);
   EXPECT_EQ(plan.stats.attempts, plan.stats.force_closure + plan.stats.no_contact +
                                      plan.stats.one_contact + plan.stats.cannot_retreat +
-                                     plan.stats.not_force_closure);
+                                     plan.stats.not_force_closure + plan.stats.inside_object);
 }
 
 TEST(PlanGenericGrasps, SameSeedSameGraspsDifferentSeedDifferentGrasps) {

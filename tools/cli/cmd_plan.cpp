@@ -50,9 +50,9 @@ void print_summary(const PlanDocument& doc, const HandModel& hand, const std::st
                         s.regions, s.regions_processed);
   std::cout << format(
       "  attempts %d: %d force closure, %d not FC, %d one contact, %d no contact, %d cannot "
-      "retreat\n",
+      "retreat, %d touched from inside\n",
       s.attempts, s.force_closure, s.not_force_closure, s.one_contact, s.no_contact,
-      s.cannot_retreat);
+      s.cannot_retreat, s.inside_object);
   if (s.sampled_attempts > 0)
     std::cout << format("  %d of them at sampled surface points, after the regions\n",
                         s.sampled_attempts);

@@ -169,6 +169,7 @@ nlohmann::json stats_json(const PlanStats& s) {
           {"one_contact", s.one_contact},
           {"cannot_retreat", s.cannot_retreat},
           {"not_force_closure", s.not_force_closure},
+          {"inside_object", s.inside_object},
           {"similar", s.similar},
           {"sampled_attempts", s.sampled_attempts},
           {"setup_s", s.setup_s},
@@ -192,6 +193,7 @@ PlanStats stats_from_json(const nlohmann::json& j) {
   s.one_contact = j.value("one_contact", 0);
   s.cannot_retreat = j.value("cannot_retreat", 0);
   s.not_force_closure = j.value("not_force_closure", 0);
+  s.inside_object = j.value("inside_object", 0);  // 0 in plans written before the check
   s.similar = j.value("similar", 0);
   s.sampled_attempts = j.value("sampled_attempts", 0);
   s.setup_s = j.value("setup_s", 0.0);

@@ -96,7 +96,8 @@ std::string run_report_markdown(const RunReport& rep) {
     md << "**No force-closure grasp found** in " << num(s.total_s) << " s (" << s.attempts
        << " attempts: " << s.not_force_closure << " not force closure, " << s.one_contact
        << " with one contact, " << s.no_contact << " without contact, " << s.cannot_retreat
-       << " could not retreat" << (s.timed_out ? "; time limit reached" : "") << ").\n";
+       << " could not retreat, " << s.inside_object << " touched the object from inside"
+       << (s.timed_out ? "; time limit reached" : "") << ").\n";
     return md.str();
   }
   md << n << " force-closure grasp" << (n > 1 ? "s" : "") << " in " << num(s.total_s)

@@ -65,6 +65,7 @@ struct PlanStats {
   int one_contact = 0;         ///< attempts ending with fewer than min_contacts contacts
   int cannot_retreat = 0;      ///< attempts where the hand could not get collision-free
   int not_force_closure = 0;   ///< attempts with contacts but no force closure
+  int inside_object = 0;       ///< attempts touching a closed object's surface from inside
   int similar = 0;             ///< force-closure grasps not returned: too like an earlier one
   int sampled_attempts = 0;    ///< cord: attempts at sampled surface points (fallback_attempts)
   double setup_s = 0.0;        ///< hand setup and object wrench-space preparation

@@ -7,6 +7,7 @@
 #include "cordgrasp/core/hand_collider.h"
 #include "cordgrasp/core/hand_model.h"
 #include "cordgrasp/core/mesh.h"
+#include "cordgrasp/core/plan_context.h"
 
 namespace cordgrasp {
 
@@ -19,9 +20,12 @@ Eigen::Vector3d outward_face_normal(const Mesh& mesh, int tri, const Eigen::Vect
 /// surface point (area-weighted), GCP there with +z along the inward normal and a uniform random
 /// roll, retreat until collision-free, close, force-closure check; repeated until params.grasps
 /// force-closure grasps, the time limit or params.max_attempts. Seeded by params.seed.
-/// `cancel` is checked before each attempt (PlanStats::interrupted).
+/// `cancel` is checked before each attempt (PlanStats::interrupted). `context`: the hand's and
+/// object's constants when the caller keeps them (make_plan_context() with this hand, mesh and
+/// collider), else built here.
 PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
                                HandObjectCollider& collider, const PlanParams& params,
-                               const CancelToken& cancel = {});
+                               const CancelToken& cancel = {},
+                               const PlanContext* context = nullptr);
 
 }  // namespace cordgrasp
