@@ -5,6 +5,7 @@ set -euo pipefail
 PKGS=(
   build-essential cmake pkg-config git
   libbullet-dev libbullet-extras-dev     # Bullet incl. double-precision (bullet-float64) + HACD
+  libmeshoptimizer-dev                    # HACD's input: a simplified copy of a large mesh
   libeigen3-dev
   liburdfdom-dev liburdfdom-headers-dev
   libassimp-dev

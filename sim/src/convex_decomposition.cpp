@@ -2,6 +2,7 @@
 
 #include <HACD/hacdHACD.h>
 #include <LinearMath/btConvexHullComputer.h>
+#include <meshoptimizer.h>
 
 #include <algorithm>
 #include <array>
@@ -13,7 +14,6 @@
 #include <map>
 #include <mutex>
 #include <optional>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
@@ -60,7 +60,7 @@ void weld(const Mesh& mesh, std::vector<HACD::Vec3<HACD::Real>>& points,
 std::string params_text(const DecompositionParams& p) {
   std::ostringstream s;
   s.precision(17);
-  s << p.concavity << ' ' << p.min_parts << ' ' << p.max_hull_vertices << ' '
+  s << "simplified " << p.concavity << ' ' << p.min_parts << ' ' << p.max_hull_vertices << ' '
     << p.compacity_weight << ' ' << p.volume_weight << ' ' << p.connect_distance << ' '
     << p.add_extra_distance_points << ' ' << p.add_face_points << ' ' << p.max_input_triangles;
   return s.str();
@@ -120,79 +120,57 @@ std::mutex& hacd_mutex() {
   return m;
 }
 
-/// A vertex-clustered copy of a mesh: vertices snapped to the means of grid cells.
-struct Clustering {
-  std::vector<Eigen::Vector3d> points;       ///< cluster means
-  std::vector<Eigen::Vector3i> triangles;    ///< non-degenerate, no duplicates
-  std::vector<int> cluster_of;               ///< original vertex → cluster
+/// The mesh HACD decomposes: the mesh itself when it has at most `max_triangles` triangles,
+/// else meshoptimizer's edge-collapse simplification down to that many (every vertex kept where
+/// it was; a thin wall keeps both sides, where a grid clustering had merged a cup's inner and
+/// outer wall into one sheet and its parts filled the cup); the sloppy simplifier when edge
+/// collapses alone cannot get there.
+struct HacdInput {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<Eigen::Vector3i> triangles;
 };
 
-Clustering cluster_vertices(const std::vector<Eigen::Vector3d>& points,
-                            const std::vector<Eigen::Vector3i>& triangles, double cell_m) {
-  Clustering c;
-  c.cluster_of.resize(points.size());
-  std::map<std::array<long long, 3>, int> index;
-  std::vector<int> counts;
-  for (size_t v = 0; v < points.size(); ++v) {
-    const Eigen::Vector3d& p = points[v];
-    const std::array<long long, 3> key = {static_cast<long long>(std::floor(p.x() / cell_m)),
-                                          static_cast<long long>(std::floor(p.y() / cell_m)),
-                                          static_cast<long long>(std::floor(p.z() / cell_m))};
-    auto [it, inserted] = index.emplace(key, static_cast<int>(c.points.size()));
-    if (inserted) {
-      c.points.push_back(Eigen::Vector3d::Zero());
-      counts.push_back(0);
-    }
-    c.points[static_cast<size_t>(it->second)] += p;
-    ++counts[static_cast<size_t>(it->second)];
-    c.cluster_of[v] = it->second;
-  }
-  for (size_t k = 0; k < c.points.size(); ++k) c.points[k] /= counts[k];
-  std::set<std::array<int, 3>> seen;
-  for (const Eigen::Vector3i& t : triangles) {
-    const int a = c.cluster_of[static_cast<size_t>(t[0])];
-    const int b = c.cluster_of[static_cast<size_t>(t[1])];
-    const int d = c.cluster_of[static_cast<size_t>(t[2])];
-    if (a == b || b == d || a == d) continue;
-    std::array<int, 3> key = {a, b, d};
-    std::sort(key.begin(), key.end());
-    if (!seen.insert(key).second) continue;
-    c.triangles.emplace_back(a, b, d);
-  }
-  return c;
-}
-
-/// The mesh itself when it has at most `max_triangles` triangles, else the finest grid
-/// clustering (bisection on the cell size) that has at most that many.
-Clustering cluster_for_decomposition(const std::vector<Eigen::Vector3d>& points,
-                                     const std::vector<Eigen::Vector3i>& triangles,
-                                     int max_triangles) {
+HacdInput simplified_for_decomposition(const std::vector<Eigen::Vector3d>& points,
+                                       const std::vector<Eigen::Vector3i>& triangles,
+                                       int max_triangles) {
+  HacdInput in;
   if (max_triangles <= 0 || static_cast<int>(triangles.size()) <= max_triangles) {
-    Clustering c;
-    c.points = points;
-    c.triangles = triangles;
-    c.cluster_of.resize(points.size());
-    for (size_t v = 0; v < points.size(); ++v) c.cluster_of[v] = static_cast<int>(v);
-    return c;
+    in.points = points;
+    in.triangles = triangles;
+    return in;
   }
-  Eigen::Vector3d lo = points.front(), hi = points.front();
-  for (const auto& p : points) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  double fine = 0.0, coarse = (hi - lo).norm();
-  Clustering best = cluster_vertices(points, triangles, coarse);
-  for (int iteration = 0; iteration < 20; ++iteration) {
-    const double mid = 0.5 * (fine + coarse);
-    Clustering c = cluster_vertices(points, triangles, mid);
-    if (static_cast<int>(c.triangles.size()) <= max_triangles) {
-      coarse = mid;
-      best = std::move(c);
-    } else {
-      fine = mid;
+  std::vector<float> positions;
+  positions.reserve(3 * points.size());
+  for (const auto& p : points)
+    positions.insert(positions.end(), {static_cast<float>(p.x()), static_cast<float>(p.y()),
+                                       static_cast<float>(p.z())});
+  std::vector<unsigned int> indices;
+  indices.reserve(3 * triangles.size());
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) indices.push_back(static_cast<unsigned int>(t[k]));
+  const size_t target = 3 * static_cast<size_t>(max_triangles);
+  std::vector<unsigned int> kept(indices.size());
+  const float no_error_bound = 1.0f;  // relative to the mesh extent: the count decides
+  size_t n = meshopt_simplify(kept.data(), indices.data(), indices.size(), positions.data(),
+                              points.size(), 3 * sizeof(float), target, no_error_bound);
+  if (n > target)
+    n = meshopt_simplifySloppy(kept.data(), indices.data(), indices.size(), positions.data(),
+                               points.size(), 3 * sizeof(float), target, no_error_bound);
+  // Only the vertices the kept triangles use, renumbered in first use.
+  std::vector<int> renumber(points.size(), -1);
+  for (size_t i = 0; i + 3 <= n; i += 3) {
+    Eigen::Vector3i t;
+    for (int k = 0; k < 3; ++k) {
+      int& r = renumber[kept[i + static_cast<size_t>(k)]];
+      if (r < 0) {
+        r = static_cast<int>(in.points.size());
+        in.points.push_back(points[kept[i + static_cast<size_t>(k)]]);
+      }
+      t[k] = r;
     }
+    in.triangles.push_back(t);
   }
-  return best;
+  return in;
 }
 
 }  // namespace
@@ -264,17 +242,16 @@ ConvexDecomposition convex_decomposition(const Mesh& mesh, const DecompositionPa
   for (const auto& t : welded_triangles)
     triangles.emplace_back(static_cast<int>(t.X()), static_cast<int>(t.Y()),
                            static_cast<int>(t.Z()));
-  // HACD's cost grows much faster than linearly: decompose a vertex-clustered copy and build
-  // each part's hull from the original vertices of its clusters.
-  const Clustering clusters = cluster_for_decomposition(points, triangles,
-                                                        params.max_input_triangles);
+  // HACD's cost grows much faster than linearly: decompose a simplified copy.
+  const HacdInput input =
+      simplified_for_decomposition(points, triangles, params.max_input_triangles);
   ConvexDecomposition out;
   std::vector<std::vector<Eigen::Vector3d>> parts;
-  if (clusters.triangles.size() >= 2) {
+  if (input.triangles.size() >= 2) {
     std::vector<HACD::Vec3<HACD::Real>> hp;
-    for (const auto& p : clusters.points) hp.emplace_back(p.x(), p.y(), p.z());
+    for (const auto& p : input.points) hp.emplace_back(p.x(), p.y(), p.z());
     std::vector<HACD::Vec3<long>> ht;
-    for (const auto& t : clusters.triangles) ht.emplace_back(t[0], t[1], t[2]);
+    for (const auto& t : input.triangles) ht.emplace_back(t[0], t[1], t[2]);
     const std::lock_guard<std::mutex> lock(hacd_mutex());
     HACD::HACD hacd;
     hacd.SetPoints(hp.data());
@@ -297,22 +274,18 @@ ConvexDecomposition convex_decomposition(const Mesh& mesh, const DecompositionPa
     if (hacd.Compute()) {
       const long* partition = hacd.GetPartition();
       const size_t n_parts = hacd.GetNClusters();
-      // Original vertices of every cluster vertex used by each part's triangles.
-      std::vector<std::vector<int>> members(clusters.points.size());
-      for (size_t v = 0; v < clusters.cluster_of.size(); ++v)
-        members[static_cast<size_t>(clusters.cluster_of[v])].push_back(static_cast<int>(v));
-      std::vector<std::vector<char>> used(n_parts, std::vector<char>(clusters.points.size(), 0));
-      for (size_t t = 0; t < clusters.triangles.size(); ++t) {
+      // The vertices each part's triangles use (the simplified copy's are mesh vertices).
+      std::vector<std::vector<char>> used(n_parts, std::vector<char>(input.points.size(), 0));
+      for (size_t t = 0; t < input.triangles.size(); ++t) {
         const long p = partition[t];
         if (p < 0 || static_cast<size_t>(p) >= n_parts) continue;
-        for (int k = 0; k < 3; ++k) used[static_cast<size_t>(p)][static_cast<size_t>(
-            clusters.triangles[t][k])] = 1;
+        for (int k = 0; k < 3; ++k)
+          used[static_cast<size_t>(p)][static_cast<size_t>(input.triangles[t][k])] = 1;
       }
       for (size_t p = 0; p < n_parts; ++p) {
         std::vector<Eigen::Vector3d> part;
-        for (size_t c = 0; c < clusters.points.size(); ++c)
-          if (used[p][c])
-            for (int v : members[c]) part.push_back(points[static_cast<size_t>(v)]);
+        for (size_t c = 0; c < input.points.size(); ++c)
+          if (used[p][c]) part.push_back(input.points[c]);
         if (part.size() >= 4) parts.push_back(std::move(part));
       }
     }

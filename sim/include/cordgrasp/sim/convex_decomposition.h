@@ -21,9 +21,9 @@ struct DecompositionParams {
   double connect_distance = 0.01;
   bool add_extra_distance_points = true;  ///< HACD: rays through the object (slow, robust)
   bool add_face_points = true;            ///< HACD: face centres as distance points
-  /// HACD runs on a vertex-clustered copy with at most this many triangles (its cost grows
-  /// much faster than linearly); each part's hull is then built from the original vertices
-  /// of its clusters. ≤ 0: no clustering.
+  /// HACD runs on a simplified copy (meshoptimizer's edge collapses, vertices where they
+  /// were) with at most this many triangles: its cost grows much faster than linearly.
+  /// ≤ 0: the whole mesh.
   int max_input_triangles = 800;
 
   /// Visits every field in declaration order (core/serialize.h).
@@ -45,7 +45,7 @@ struct ConvexDecomposition {
 };
 
 /// HACD decomposition of a triangle soup (vertices welded at identical coordinates first,
-/// clustered down to max_input_triangles); part hulls are reduced to max_hull_vertices
+/// simplified down to max_input_triangles); part hulls are reduced to max_hull_vertices
 /// (simplified_convex_hull). A mesh HACD cannot handle gives one part: its convex hull.
 /// Deterministic.
 /// @throws std::invalid_argument for an empty mesh.
