@@ -25,6 +25,7 @@ struct Workspace {
   std::vector<double> hits;
   std::vector<Eigen::Vector2d> hull_input;
   std::vector<Eigen::Vector2d> hull;
+  std::vector<Eigen::Vector2d> hull_scratch;
 };
 
 /// Front cord as the counter-clockwise hull chain from P_r to P_l (CordConstruction::kHullChain):
@@ -40,7 +41,7 @@ void hull_chain(Workspace& ws, const Eigen::Vector2d& q1, const Eigen::Vector2d&
     if (cross2(dir, v - p_r) * side > 0.0) ws.hull_input.push_back(v);
   ws.hull_input.push_back(p_r);
   ws.hull_input.push_back(p_l);
-  detail::convex_hull_ccw(ws.hull_input, ws.hull);
+  detail::convex_hull_ccw(ws.hull_input, ws.hull, ws.hull_scratch);
   const auto& h = ws.hull;
   const size_t m = h.size();
   const size_t ir = size_t(std::find(h.begin(), h.end(), p_r) - h.begin());

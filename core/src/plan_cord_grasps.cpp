@@ -14,14 +14,22 @@
 namespace cordgrasp {
 
 double approach_travel_m(const Mesh& mesh, const GraspRegion& region) {
+  const Eigen::Vector3d c = vertex_mean(mesh);
+  return approach_travel_m(mesh, region, c, bounding_radius(mesh, c), nullptr);
+}
+
+double approach_travel_m(const Mesh& mesh, const GraspRegion& region,
+                         const Eigen::Vector3d& vertex_mean_O, double radius_m,
+                         const MeshBvh* bvh) {
   const Eigen::Vector3d v = region.p_m - region.p1;
   const double fallback = v.norm();
   if (fallback <= 0.0) return 0.0;
   const Eigen::Vector3d z = v / fallback;
-  const Eigen::Vector3d c = vertex_mean(mesh);
-  const double reach = (region.p1 - c).norm() + bounding_radius(mesh, c);
+  const double reach = (region.p1 - vertex_mean_O).norm() + radius_m;
   // First surface hit along the approach (docs/algorithm.md §7.2).
-  const auto hits = segment_mesh_hits(mesh, region.p1, region.p1 + reach * z);
+  const Eigen::Vector3d end = region.p1 + reach * z;
+  const auto hits =
+      bvh ? segment_mesh_hits(*bvh, region.p1, end) : segment_mesh_hits(mesh, region.p1, end);
   return hits.empty() ? fallback : hits.front().t * reach;
 }
 
@@ -40,6 +48,8 @@ PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand
   std::optional<PlanContext> own;
   if (!context) own = internal::make_plan_context(mesh, hand, collider, params, stats);
   const PlanContext& ctx = context ? *context : *own;
+  const Eigen::Vector3d center_O = vertex_mean(mesh);
+  const std::shared_ptr<const MeshBvh> bvh = collider.object_bvh();
 
   std::vector<size_t> order;
   if (order_in) {
@@ -66,7 +76,7 @@ PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand
     }
     const GraspRegion& region = regions[order[rank]];
     ++stats.regions_processed;
-    const double travel = approach_travel_m(mesh, region);
+    const double travel = approach_travel_m(mesh, region, center_O, ctx.radius_m, bvh.get());
     for (int roll = 0; roll < (params.roll_retry ? 2 : 1); ++roll) {
       if (stats.attempts >= params.max_attempts) break;
       const Eigen::Isometry3d X_OG = gcp_pose_for_region(region, ctx.setup.R_GH, roll == 1);

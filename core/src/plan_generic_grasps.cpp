@@ -11,16 +11,23 @@
 namespace cordgrasp {
 
 Eigen::Vector3d outward_face_normal(const Mesh& mesh, int tri, const Eigen::Vector3d& p_O) {
+  const Eigen::Vector3d c = vertex_mean(mesh);
+  return outward_face_normal(mesh, tri, p_O, c, bounding_radius(mesh, c), nullptr);
+}
+
+Eigen::Vector3d outward_face_normal(const Mesh& mesh, int tri, const Eigen::Vector3d& p_O,
+                                    const Eigen::Vector3d& vertex_mean_O, double radius_m,
+                                    const MeshBvh* bvh) {
   const Eigen::Vector3i& t = mesh.triangles.at(static_cast<size_t>(tri));
   const Eigen::Vector3d& a = mesh.vertices[t[0]];
   Eigen::Vector3d n = (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a);
   if (n.norm() <= 0.0) return Eigen::Vector3d::UnitZ();
   n.normalize();
-  const Eigen::Vector3d c = vertex_mean(mesh);
-  const double reach = 2.0 * bounding_radius(mesh, c) + (p_O - c).norm() + 1.0;
+  const double reach = 2.0 * radius_m + (p_O - vertex_mean_O).norm() + 1.0;
   // Start just off the surface so the ray does not count its own triangle.
   const double lift = 1e-7 * reach;
-  const auto hits = segment_mesh_hits(mesh, p_O + lift * n, p_O + reach * n);
+  const Eigen::Vector3d from = p_O + lift * n, to = p_O + reach * n;
+  const auto hits = bvh ? segment_mesh_hits(*bvh, from, to) : segment_mesh_hits(mesh, from, to);
   return hits.size() % 2 == 1 ? Eigen::Vector3d(-n) : n;
 }
 
@@ -56,6 +63,8 @@ void sample_surface_grasps(const Mesh& mesh, const HandModel& hand, HandObjectCo
   std::discrete_distribution<int> pick_triangle(areas.begin(), areas.end());
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::mt19937_64 rng(params.seed);
+  const Eigen::Vector3d center_O = vertex_mean(mesh);
+  const std::shared_ptr<const MeshBvh> bvh = collider.object_bvh();
 
   const int wanted = std::max(1, params.grasps);
   const int attempts_end = stats.attempts + std::max(0, max_attempts);
@@ -82,7 +91,7 @@ void sample_surface_grasps(const Mesh& mesh, const HandModel& hand, HandObjectCo
     const Eigen::Vector3d p = mesh.vertices[t[0]] +
                               u * (mesh.vertices[t[1]] - mesh.vertices[t[0]]) +
                               v * (mesh.vertices[t[2]] - mesh.vertices[t[0]]);
-    const Eigen::Vector3d z = -outward_face_normal(mesh, tri, p);
+    const Eigen::Vector3d z = -outward_face_normal(mesh, tri, p, center_O, ctx.radius_m, bvh.get());
     const double roll = 2.0 * M_PI * unit(rng);
     Eigen::Index axis = 0;
     z.cwiseAbs().minCoeff(&axis);

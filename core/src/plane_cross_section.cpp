@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "prefetch.h"
 #include "slice_triangle.h"
 
 namespace cordgrasp {
@@ -62,6 +63,7 @@ void visit_straddling_triangles(const MeshBvh& bvh, const SlicePlane& f, const R
     } else if (top + 2 <= 128) {  // always true: median-split depth is ≤ 64
       stack[top++] = node.first;
       stack[top++] = index + 1;
+      detail::prefetch(&bvh.nodes[size_t(node.first)]);  // the right child, often next but one
     }
   }
 }

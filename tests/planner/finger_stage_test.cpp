@@ -7,6 +7,8 @@
 #include "cordgrasp/core/grasp_quality.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
+#include "cordgrasp/core/mesh_bvh.h"
+#include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/shapes.h"
 #include "test_hands.h"
@@ -214,6 +216,24 @@ TEST(ApproachTravel, IsTheDistanceToTheFirstSurfaceHit) {
   region.p1 = {0.2, 0.2, 0.2};  // ray passes beside the box: ‖P_m − P1‖
   region.p_m = {0.2, 0.2, 0.0};
   EXPECT_NEAR(approach_travel_m(box, region), 0.2, 1e-12);
+}
+
+TEST(ApproachTravel, TheObjectsBvhGivesTheSameTravel) {
+  const Mesh torus = make_torus_mesh(0.05, 0.015);
+  const MeshBvh bvh = build_object_bvh(torus);
+  const Eigen::Vector3d c = vertex_mean(torus);
+  const double r = bounding_radius(torus, c);
+  int hits = 0;
+  for (int k = 0; k < 200; ++k) {  // approaches from a ring of points towards the torus
+    const double a = 0.0314 * k;
+    GraspRegion region;
+    region.p1 = {0.12 * std::cos(a), 0.12 * std::sin(a), 0.05 * std::sin(3.0 * a)};
+    region.p_m = {0.03 * std::cos(2.0 * a), 0.03 * std::sin(a), 0.0};
+    const double brute = approach_travel_m(torus, region);
+    EXPECT_EQ(approach_travel_m(torus, region, c, r, &bvh), brute) << "approach " << k;
+    hits += brute < (region.p_m - region.p1).norm() ? 1 : 0;
+  }
+  EXPECT_GT(hits, 100);  // most approaches meet the torus before P_m
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "cordgrasp/collision/bullet_hand_collider.h"
+#include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/plan_generic_grasps.h"
 #include "cordgrasp/core/shapes.h"
@@ -206,6 +207,24 @@ TEST(OutwardFaceNormal, HandlesConcaveFacesInsideATorusHole) {
     if ((p - tube_center).head<2>().dot(radial) < -0.01) ++inner;  // faces toward the hole
   }
   EXPECT_GT(inner, 0);  // the vertex-mean rule would get every one of these wrong
+}
+
+TEST(OutwardFaceNormal, TheObjectsBvhGivesTheSameNormals) {
+  // A torus with the inner half of its faces wound inwards: parity decides every one of them.
+  Mesh torus = make_torus_mesh(0.05, 0.015);
+  for (size_t i = 0; i < torus.triangles.size(); i += 2)
+    std::swap(torus.triangles[i][1], torus.triangles[i][2]);
+  const MeshBvh bvh = build_object_bvh(torus);
+  const Eigen::Vector3d c = vertex_mean(torus);
+  const double r = bounding_radius(torus, c);
+  for (size_t i = 0; i < torus.triangles.size(); ++i) {
+    const Eigen::Vector3i& t = torus.triangles[i];
+    const Eigen::Vector3d p =
+        (torus.vertices[t[0]] + 2.0 * torus.vertices[t[1]] + torus.vertices[t[2]]) / 4.0;
+    const int k = static_cast<int>(i);
+    EXPECT_TRUE(outward_face_normal(torus, k, p, c, r, &bvh) == outward_face_normal(torus, k, p))
+        << "face " << i;
+  }
 }
 
 TEST(PlanGenericGrasps, FindsForceClosureGraspsOnABox) {

@@ -17,6 +17,11 @@ namespace cordgrasp {
 /// to the first surface hit, or ‖P_m − P1‖ when the ray misses [m].
 double approach_travel_m(const Mesh& mesh, const GraspRegion& region);
 
+/// The same travel with the object's vertex mean and its bounding radius about it given, and
+/// its BVH (the same hits in logarithmic time; null: every triangle is tested).
+double approach_travel_m(const Mesh& mesh, const GraspRegion& region,
+                         const Eigen::Vector3d& vertex_mean_O, double radius_m, const MeshBvh* bvh);
+
 /// Finger stage and force-closure check on grasp regions in ascending χ (docs/algorithm.md §7–§8),
 /// until params.grasps force-closure grasps or the time limit; each region is tried as computed,
 /// then rolled 180° if that fails. `regions` may come in any order; `order`, when given, is the

@@ -16,6 +16,12 @@ namespace cordgrasp {
 /// Ray parity is right for closed meshes whatever their winding, concave ones included.
 Eigen::Vector3d outward_face_normal(const Mesh& mesh, int tri, const Eigen::Vector3d& p_O);
 
+/// The same normal with the object's vertex mean and its bounding radius about it given, and
+/// its BVH (the same ray hits in logarithmic time; null: every triangle is tested).
+Eigen::Vector3d outward_face_normal(const Mesh& mesh, int tri, const Eigen::Vector3d& p_O,
+                                    const Eigen::Vector3d& vertex_mean_O, double radius_m,
+                                    const MeshBvh* bvh);
+
 /// Baseline like Simox GenericGraspPlanner + ApproachMovementSurfaceNormal (paper §V): random
 /// surface point (area-weighted), GCP there with +z along the inward normal and a uniform random
 /// roll, retreat until collision-free, close, force-closure check; repeated until params.grasps
