@@ -33,12 +33,13 @@ extern "C" void on_interrupt(int signal_number) {
 }
 
 /// A scan of millions of triangles is planned in phases (load, BVH, the object's constants) that
-/// each allocate and free arrays of tens to hundreds of MB. Above glibc's mmap threshold each
-/// array is mapped afresh and unmapped on free, so every phase pays the kernel's zeroing of its
-/// pages again; served from the heap, with up to 256 MiB of freed memory kept, they are reused.
+/// each allocate and free arrays of a few to tens of MB. glibc maps such arrays afresh and unmaps
+/// them on free until its mmap threshold has risen (to 32 MiB at most), so each phase pays the
+/// kernel's zeroing of its pages again. The threshold starts at that ceiling here, and up to
+/// 256 MiB of freed heap stays for reuse; larger arrays are still mapped and returned.
 void reuse_freed_memory() {
 #if defined(__GLIBC__)
-  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
 #endif
 }
