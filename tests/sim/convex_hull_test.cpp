@@ -2,17 +2,35 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "cordgrasp/core/convex_hull_volume.h"
 #include "cordgrasp/core/mesh_volume.h"
 #include "cordgrasp/core/object_meshes.h"
 #include "cordgrasp/core/shapes.h"
+#include "cordgrasp/core/sphere_points.h"
 #include "cordgrasp/sim/convex_decomposition.h"
 
 namespace cordgrasp {
 namespace {
 
 constexpr int kMaxHullVertices = 64;
+constexpr int kSeparatingDirections = 2000;  // tried per (point, part)
+constexpr double kOutsideMargin_m = 1e-3;    // a cavity point lies this far outside a part
+
+/// True when a direction among kSeparatingDirections puts `p` more than kOutsideMargin_m beyond
+/// every vertex of the convex part: `p` is then outside the part's hull (a sufficient test).
+bool outside_hull(const std::vector<Eigen::Vector3d>& part, const Eigen::Vector3d& p) {
+  static const std::vector<Eigen::Vector3d> directions =
+      sphere_points(kSeparatingDirections, SphereSequence::kFibonacci);
+  for (const Eigen::Vector3d& d : directions) {
+    double reach = -std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3d& v : part) reach = std::max(reach, d.dot(v));
+    if (d.dot(p) > reach + kOutsideMargin_m) return true;
+  }
+  return false;
+}
 
 bool contains(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& p) {
   return std::find(points.begin(), points.end(), p) != points.end();
@@ -78,6 +96,20 @@ TEST(ConvexDecomposition, ThinWalledCupKeepsItsCavity) {
   ASSERT_TRUE(solid.has_value());
   EXPECT_LT(parts_m3, kMaxPartVolumeRatio * solid->volume_m3);
   EXPECT_GT(parts_m3, solid->volume_m3 / kMaxPartVolumeRatio);
+  // Inside the cup (axis z, inner radius 36 mm, floor at 6 mm, rim at 95 mm): no part.
+  const MugObjectParams mug_params;
+  const double r_in = 0.5 * mug_params.outer_diameter_m - mug_params.wall_m;
+  for (const double z : {0.02, 0.04, 0.06, 0.08})
+    for (const double r : {0.0, 0.6 * r_in})
+      for (const double a : {0.0, 2.0, 4.0}) {
+        const Eigen::Vector3d p(r * std::cos(a), r * std::sin(a), z);
+        for (size_t i = 0; i < d.parts.size(); ++i)
+          EXPECT_TRUE(outside_hull(d.parts[i], p)) << "part " << i << " holds " << p.transpose();
+      }
+  // The floor's centre is in the material: some part holds it (the test above can fail).
+  const Eigen::Vector3d floor(0.0, 0.0, 0.5 * mug_params.bottom_m);
+  EXPECT_TRUE(std::any_of(d.parts.begin(), d.parts.end(),
+                          [&](const auto& part) { return !outside_hull(part, floor); }));
 }
 
 }  // namespace
