@@ -271,6 +271,38 @@ TEST(PlanJson, PlansWrittenBeforeTheFallbackReadAsPlannedWithoutIt) {
   std::filesystem::remove(path);
 }
 
+TEST(PlanJson, StatsRoundTripAndOlderFilesReadMissingCountsAsZero) {
+  const HandModel hand = load_hand("parallel_gripper");
+  PlanDocument doc = sample_plan(hand);
+  doc.stats.inside_object = 5;
+  doc.stats.sampled_attempts = 2;
+  doc.stats.timed_out = true;
+  nlohmann::json j = plan_to_json(doc, hand);
+  EXPECT_EQ(j["stats"]["machine_dependent"], true);
+  EXPECT_FALSE(j["stats"].contains("interrupted"));  // the document's own key
+  const PlanStats back = plan_from_json(j, hand).stats;
+  EXPECT_EQ(back.inside_object, 5);
+  EXPECT_EQ(back.sampled_attempts, 2);
+  EXPECT_TRUE(back.timed_out);
+  EXPECT_EQ(back.first_force_closure_s, doc.stats.first_force_closure_s);
+
+  j["stats"].erase("inside_object");  // written before the check existed
+  j["stats"].erase("sampled_attempts");
+  const PlanStats old = plan_from_json(j, hand).stats;
+  EXPECT_EQ(old.inside_object, 0);
+  EXPECT_EQ(old.sampled_attempts, 0);
+  EXPECT_EQ(old.attempts, doc.stats.attempts);
+
+  j["stats"]["attempts"] = "three";
+  try {
+    plan_from_json(j, hand, "typo.json");
+    FAIL() << "a count of the wrong type was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("typo.json: stats.attempts"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(PlanJson, PosesReadBackBitForBit) {
   const HandModel hand = load_hand("parallel_gripper");
   PlanDocument doc = sample_plan(hand);

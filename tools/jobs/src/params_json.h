@@ -72,12 +72,19 @@ class JsonWriteArchive {
   nlohmann::json json_ = nlohmann::json::object();
 };
 
+/// What a JsonReadArchive does with a field whose key is absent.
+enum class MissingKey {
+  kFail,         ///< throw InputError (settings, parameters: a misspelt key must not pass)
+  kKeepDefault,  ///< leave the field as it is (records that gained fields over time)
+};
+
 /// Reads visited fields from a JSON object; `context` (a file name) and `path` (the object's
 /// JSON path, e.g. "parameters.cord") prefix every error.
 class JsonReadArchive {
  public:
-  JsonReadArchive(const nlohmann::json& json, std::string context, std::string path)
-      : json_(json), context_(std::move(context)), path_(std::move(path)) {
+  JsonReadArchive(const nlohmann::json& json, std::string context, std::string path,
+                  MissingKey missing = MissingKey::kFail)
+      : json_(json), context_(std::move(context)), path_(std::move(path)), missing_(missing) {
     if (!json_.is_object()) fail(path_, "expected an object, got " + type_of(json_));
   }
 
@@ -85,6 +92,7 @@ class JsonReadArchive {
   void Visit(const NameValuePair<T>& nvp) {
     const std::string key = path_.empty() ? std::string(nvp.name) : path_ + "." + nvp.name;
     const auto it = json_.find(nvp.name);
+    if (it == json_.end() && missing_ == MissingKey::kKeepDefault) return;
     if (it == json_.end()) fail(key, "missing");
     read_value(*it, key, nvp.value);
     known_.insert(nvp.name);
@@ -127,7 +135,7 @@ class JsonReadArchive {
         *out = value;
       }
     } else if constexpr (IsSerializable<T>::value) {
-      JsonReadArchive nested(j, context_, key);
+      JsonReadArchive nested(j, context_, key, missing_);
       out->Serialize(&nested);
       nested.reject_unknown_keys();
     } else if constexpr (std::is_same_v<T, bool>) {
@@ -153,6 +161,7 @@ class JsonReadArchive {
   const nlohmann::json& json_;
   std::string context_;
   std::string path_;
+  MissingKey missing_;
   std::set<std::string> known_;
 };
 

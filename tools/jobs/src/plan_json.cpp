@@ -161,50 +161,16 @@ nlohmann::json optional_json(const std::optional<double>& v) {
 }
 
 nlohmann::json stats_json(const PlanStats& s) {
-  return {{"regions", s.regions},
-          {"regions_processed", s.regions_processed},
-          {"attempts", s.attempts},
-          {"force_closure", s.force_closure},
-          {"no_contact", s.no_contact},
-          {"one_contact", s.one_contact},
-          {"cannot_retreat", s.cannot_retreat},
-          {"not_force_closure", s.not_force_closure},
-          {"inside_object", s.inside_object},
-          {"similar", s.similar},
-          {"sampled_attempts", s.sampled_attempts},
-          {"setup_s", s.setup_s},
-          {"exploration_s", s.exploration_s},
-          {"finger_s", s.finger_s},
-          {"quality_s", s.quality_s},
-          {"total_s", s.total_s},
-          {"first_force_closure_s", optional_json(s.first_force_closure_s)},
-          {"timed_out", s.timed_out},
-          {"attempt_budget_reached", s.attempt_budget_reached},
-          {"machine_dependent", s.timed_out}};
+  nlohmann::json j = params_to_json(s);
+  j["machine_dependent"] = s.timed_out;  // for readers: another machine may plan otherwise
+  return j;
 }
 
-PlanStats stats_from_json(const nlohmann::json& j) {
+/// Plan files from before a count was added lack its key: it reads as 0.
+PlanStats stats_from_json(const nlohmann::json& j, const std::string& source) {
   PlanStats s;
-  s.regions = j.value("regions", 0);
-  s.regions_processed = j.value("regions_processed", 0);
-  s.attempts = j.value("attempts", 0);
-  s.force_closure = j.value("force_closure", 0);
-  s.no_contact = j.value("no_contact", 0);
-  s.one_contact = j.value("one_contact", 0);
-  s.cannot_retreat = j.value("cannot_retreat", 0);
-  s.not_force_closure = j.value("not_force_closure", 0);
-  s.inside_object = j.value("inside_object", 0);  // 0 in plans written before the check
-  s.similar = j.value("similar", 0);
-  s.sampled_attempts = j.value("sampled_attempts", 0);
-  s.setup_s = j.value("setup_s", 0.0);
-  s.exploration_s = j.value("exploration_s", 0.0);
-  s.finger_s = j.value("finger_s", 0.0);
-  s.quality_s = j.value("quality_s", 0.0);
-  s.total_s = j.value("total_s", 0.0);
-  if (j.contains("first_force_closure_s") && !j["first_force_closure_s"].is_null())
-    s.first_force_closure_s = j["first_force_closure_s"].get<double>();
-  s.timed_out = j.value("timed_out", false);
-  s.attempt_budget_reached = j.value("attempt_budget_reached", false);
+  JsonReadArchive archive(j, source, "stats", MissingKey::kKeepDefault);
+  s.Serialize(&archive);
   return s;
 }
 
@@ -409,7 +375,7 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
     JsonReadArchive parameters(j.at("parameters"), source, "parameters");
     PlanParameters{&p}.Serialize(&parameters);
     parameters.reject_unknown_keys();
-    p.stats = stats_from_json(j.value("stats", nlohmann::json::object()));
+    p.stats = stats_from_json(j.value("stats", nlohmann::json::object()), source);
     p.interrupted = read_interrupted(j, source);
     p.stats.interrupted = !p.interrupted.empty();
     if (p.hand_name != hand.name)

@@ -8,6 +8,7 @@
 #include "cordgrasp/core/grasp.h"
 #include "cordgrasp/core/grasp_diversity.h"
 #include "cordgrasp/core/grasp_quality.h"
+#include "cordgrasp/core/serialize.h"
 
 namespace cordgrasp {
 
@@ -79,6 +80,20 @@ struct PlanStats {
   bool timed_out = false;
   bool attempt_budget_reached = false;  ///< stopped by max_attempts before finding `grasps`
   bool interrupted = false;    ///< stopped by a CancelToken (SIGINT) before its other limits
+
+  /// Visits the fields a plan file keeps, in declaration order (core/serialize.h);
+  /// `interrupted` is not one: plan.json records it as the document's `interrupted` reason.
+  template <typename Archive>
+  void Serialize(Archive* a) {
+    visit_fields(a, CORDGRASP_NVP(regions), CORDGRASP_NVP(regions_processed),
+                 CORDGRASP_NVP(attempts), CORDGRASP_NVP(force_closure), CORDGRASP_NVP(no_contact),
+                 CORDGRASP_NVP(one_contact), CORDGRASP_NVP(cannot_retreat),
+                 CORDGRASP_NVP(not_force_closure), CORDGRASP_NVP(inside_object),
+                 CORDGRASP_NVP(similar), CORDGRASP_NVP(sampled_attempts), CORDGRASP_NVP(setup_s),
+                 CORDGRASP_NVP(exploration_s), CORDGRASP_NVP(finger_s), CORDGRASP_NVP(quality_s),
+                 CORDGRASP_NVP(total_s), CORDGRASP_NVP(first_force_closure_s),
+                 CORDGRASP_NVP(timed_out), CORDGRASP_NVP(attempt_budget_reached));
+  }
 };
 
 /// Planned grasps (force-closure ones, in the order found) and statistics.

@@ -8,11 +8,10 @@
 //                quality{contact{mu, cone_edges, soft_finger_radius_m}, mode, ..}, ..),
 //                palm_width_m, cord: every CordParams field (null for the generic planner)},
 //                written and read through the structs' Serialize visitors (every key required)
-//   stats: {regions, regions_processed, attempts, force_closure, no_contact, one_contact,
-//           cannot_retreat, not_force_closure, inside_object, setup_s, exploration_s,
-//           finger_s, quality_s, total_s, first_force_closure_s (null if none), timed_out,
-//           attempt_budget_reached, machine_dependent (= timed_out: the --time-limit safety net
-//           fired, so another machine may find other grasps with the same seed)}
+//   stats: {every PlanStats field but interrupted (first_force_closure_s null if none; a
+//           count absent from an older file reads as 0), machine_dependent (= timed_out: the
+//           --time-limit safety net fired, so another machine may find other grasps with the
+//           same seed)}
 //   grasps: [{hand_pose: {position_m: [x,y,z], quaternion_wxyz: [w,x,y,z]}  (root link in the
 //             object frame), gcp_pose: {same, GCP in the object frame},
 //             joints: {name: value} (after closing), preshape_joints: {name: value},
