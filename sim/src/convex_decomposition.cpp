@@ -32,21 +32,21 @@ constexpr char kCacheMagic[8] = {'C', 'G', 'H', 'A', 'C', 'D', '1', '\n'};
 
 /// Welds vertices with identical coordinates and drops zero-area triangles (HACD joins
 /// triangles through shared vertex indices).
-void weld(const Mesh& mesh, std::vector<HACD::Vec3<HACD::Real>>& points,
-          std::vector<HACD::Vec3<long>>& triangles) {
-  std::map<std::array<double, 3>, long> index;
-  std::vector<long> remap(mesh.vertices.size());
+void weld(const Mesh& mesh, std::vector<Eigen::Vector3d>& points,
+          std::vector<Eigen::Vector3i>& triangles) {
+  std::map<std::array<double, 3>, int> index;
+  std::vector<int> remap(mesh.vertices.size());
   for (size_t i = 0; i < mesh.vertices.size(); ++i) {
     const Eigen::Vector3d& v = mesh.vertices[i];
     const std::array<double, 3> key = {v.x(), v.y(), v.z()};
-    auto [it, inserted] = index.emplace(key, static_cast<long>(points.size()));
-    if (inserted) points.emplace_back(v.x(), v.y(), v.z());
+    auto [it, inserted] = index.emplace(key, static_cast<int>(points.size()));
+    if (inserted) points.push_back(v);
     remap[i] = it->second;
   }
   for (const Eigen::Vector3i& t : mesh.triangles) {
-    const long a = remap[static_cast<size_t>(t[0])];
-    const long b = remap[static_cast<size_t>(t[1])];
-    const long c = remap[static_cast<size_t>(t[2])];
+    const int a = remap[static_cast<size_t>(t[0])];
+    const int b = remap[static_cast<size_t>(t[1])];
+    const int c = remap[static_cast<size_t>(t[2])];
     if (a == b || b == c || a == c) continue;
     const Eigen::Vector3d& pa = mesh.vertices[static_cast<size_t>(t[0])];
     if ((mesh.vertices[static_cast<size_t>(t[1])] - pa)
@@ -231,17 +231,9 @@ ConvexDecomposition convex_decomposition(const Mesh& mesh, const DecompositionPa
     throw std::invalid_argument("convex_decomposition: mesh '" + mesh.name +
                                 "' has no triangles");
   const auto start = std::chrono::steady_clock::now();
-  std::vector<HACD::Vec3<HACD::Real>> welded;
-  std::vector<HACD::Vec3<long>> welded_triangles;
-  weld(mesh, welded, welded_triangles);
   std::vector<Eigen::Vector3d> points;
-  points.reserve(welded.size());
-  for (const auto& p : welded) points.emplace_back(p.X(), p.Y(), p.Z());
   std::vector<Eigen::Vector3i> triangles;
-  triangles.reserve(welded_triangles.size());
-  for (const auto& t : welded_triangles)
-    triangles.emplace_back(static_cast<int>(t.X()), static_cast<int>(t.Y()),
-                           static_cast<int>(t.Z()));
+  weld(mesh, points, triangles);
   // HACD's cost grows much faster than linearly: decompose a simplified copy.
   const HacdInput input =
       simplified_for_decomposition(points, triangles, params.max_input_triangles);
