@@ -33,6 +33,20 @@ double approach_travel_m(const Mesh& mesh, const GraspRegion& region,
   return hits.empty() ? fallback : hits.front().t * reach;
 }
 
+PlanResult plan_cord_fallback_grasps(const Mesh& mesh, const HandModel& hand,
+                                     HandObjectCollider& collider, const PlanParams& params,
+                                     const CancelToken& cancel, const PlanContext* context) {
+  const auto start = std::chrono::steady_clock::now();
+  PlanResult result;
+  std::optional<PlanContext> own;
+  if (!context) own = internal::make_plan_context(mesh, hand, collider, params, result.stats);
+  internal::sample_surface_grasps(mesh, hand, collider, context ? *context : *own, params,
+                                  internal::SampledApproach::kToMiddle, params.max_attempts, start,
+                                  0.0, cancel, result);
+  result.stats.total_s = internal::seconds_since(start);
+  return result;
+}
+
 PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand,
                                          HandObjectCollider& collider,
                                          const std::vector<GraspRegion>& regions,
@@ -176,10 +190,12 @@ PlanResult plan_cord_grasps(const Mesh& mesh, const HandModel& hand, HandObjectC
   const int wanted = std::max(1, params.grasps);
   if (static_cast<int>(result.grasps.size()) < wanted && params.fallback_attempts > 0 &&
       !stats.timed_out && !stats.interrupted) {
-    // Regions or attempts spent: the generic planner's sampled surface points, as many more.
+    // Regions or attempts spent: sampled surface points (plan_cord_fallback_grasps), as many
+    // more.
     const int before = stats.attempts;
     stats.attempt_budget_reached = false;
-    internal::sample_surface_grasps(mesh, hand, collider, *ctx, params, params.fallback_attempts,
+    internal::sample_surface_grasps(mesh, hand, collider, *ctx, params,
+                                    internal::SampledApproach::kToMiddle, params.fallback_attempts,
                                     start, 0.0, cancel, result);
     stats.sampled_attempts = stats.attempts - before;
     stats.total_s = internal::seconds_since(start);

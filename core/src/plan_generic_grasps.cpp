@@ -39,16 +39,26 @@ PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
   std::optional<PlanContext> own;
   if (!context) own = internal::make_plan_context(mesh, hand, collider, params, result.stats);
   const PlanContext& ctx = context ? *context : *own;
-  internal::sample_surface_grasps(mesh, hand, collider, ctx, params, params.max_attempts, start,
-                                  0.0, cancel, result);
+  internal::sample_surface_grasps(mesh, hand, collider, ctx, params,
+                                  internal::SampledApproach::kNone, params.max_attempts, start, 0.0,
+                                  cancel, result);
   result.stats.total_s = internal::seconds_since(start);
   return result;
 }
 
 namespace internal {
 
+double thickness_m(const Mesh& mesh, const MeshBvh* bvh, const Eigen::Vector3d& p_O,
+                   const Eigen::Vector3d& z_O, double reach_m) {
+  // Start just off the surface so the ray does not count the point's own triangle.
+  const Eigen::Vector3d from = p_O + 1e-7 * reach_m * z_O, to = p_O + reach_m * z_O;
+  const auto hits = bvh ? segment_mesh_hits(*bvh, from, to) : segment_mesh_hits(mesh, from, to);
+  return hits.empty() ? 0.0 : (from + hits.front().t * (to - from) - p_O).norm();
+}
+
 void sample_surface_grasps(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
-                           const PlanContext& ctx, const PlanParams& params, int max_attempts,
+                           const PlanContext& ctx, const PlanParams& params,
+                           SampledApproach approach, int max_attempts,
                            std::chrono::steady_clock::time_point start, double offset_s,
                            const CancelToken& cancel, PlanResult& result) {
   PlanStats& stats = result.stats;
@@ -103,8 +113,12 @@ void sample_surface_grasps(const Mesh& mesh, const HandModel& hand, HandObjectCo
     X_OG.linear().col(1) = z.cross(x);
     X_OG.linear().col(2) = z;
     X_OG.translation() = p;
+    const double travel =
+        approach == SampledApproach::kToMiddle
+            ? 0.5 * thickness_m(mesh, bvh.get(), p, z, 2.0 * ctx.radius_m + (p - center_O).norm())
+            : 0.0;
     Grasp grasp;
-    if (!internal::attempt_grasp(hand, collider, ctx, params, X_OG, 0.0, stats, grasp)) continue;
+    if (!internal::attempt_grasp(hand, collider, ctx, params, X_OG, travel, stats, grasp)) continue;
     if (!differs_from_all(grasp, result.grasps, params.diversity, ctx.radius_m)) {
       ++stats.similar;
       continue;

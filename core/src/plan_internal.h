@@ -6,6 +6,7 @@
 #include "cordgrasp/core/cancel_token.h"
 #include "cordgrasp/core/grasp_plan.h"
 #include "cordgrasp/core/mesh.h"
+#include "cordgrasp/core/mesh_bvh.h"
 #include "cordgrasp/core/plan_context.h"
 
 namespace cordgrasp::internal {
@@ -36,13 +37,26 @@ bool attempt_grasp(const HandModel& hand, HandObjectCollider& collider, const Pl
                    const PlanParams& params, const Eigen::Isometry3d& X_OG_start,
                    double approach_travel_m, PlanStats& stats, Grasp& grasp);
 
-/// The generic planner's attempts (plan_generic_grasps()): area-weighted random surface points
-/// drawn with params.seed, the GCP there along the inward normal at a random roll. Appends
-/// force-closure grasps that differ from those in `result` until it holds params.grasps, or
-/// `max_attempts` more attempts, params.time_limit_s (`offset_s` + the time since `start`) or
-/// `cancel`; counts into result.stats.
+/// How far a sampled point's hand approaches before it retreats until free.
+enum class SampledApproach {
+  kNone,      ///< the generic baseline (Simox): the GCP starts on the point and only retreats
+  kToMiddle,  ///< the cord planner's fallback: along the inward normal to the object's middle
+};
+
+/// The object's thickness at surface point `p_O` along the inward normal `z_O`: the distance to
+/// the first surface beyond it within `reach_m`, 0 when there is none [m]. `bvh`: the mesh's
+/// (the same hits in logarithmic time; null: every triangle is tested).
+double thickness_m(const Mesh& mesh, const MeshBvh* bvh, const Eigen::Vector3d& p_O,
+                   const Eigen::Vector3d& z_O, double reach_m);
+
+/// The sampled planners' attempts: area-weighted random surface points drawn with params.seed,
+/// the GCP there along the inward normal at a random roll, approached as `approach` says.
+/// Appends force-closure grasps that differ from those in `result` until it holds
+/// params.grasps, or `max_attempts` more attempts, params.time_limit_s (`offset_s` + the time
+/// since `start`) or `cancel`; counts into result.stats.
 void sample_surface_grasps(const Mesh& mesh, const HandModel& hand, HandObjectCollider& collider,
-                           const PlanContext& ctx, const PlanParams& params, int max_attempts,
+                           const PlanContext& ctx, const PlanParams& params,
+                           SampledApproach approach, int max_attempts,
                            std::chrono::steady_clock::time_point start, double offset_s,
                            const CancelToken& cancel, PlanResult& result);
 

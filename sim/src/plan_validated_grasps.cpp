@@ -64,9 +64,9 @@ BulletColliderParams collider_params(int threads) {
 /// Hands out the planner's force-closure candidates one at a time, best first: the cord planner
 /// continues in its region order after the last candidate's region and, once every region is
 /// processed, explores again with the next seed (region_rank is then the rank in that
-/// exploration), and once the explorations are spent, sampled surface points as the generic
-/// planner makes them, in batches of PlanParams::fallback_attempts until the time left is
-/// spent; the generic planner is called again with the next seed.
+/// exploration), and once the explorations are spent, the cord planner's sampled fallback
+/// (plan_cord_fallback_grasps()), in batches of PlanParams::fallback_attempts until the time
+/// left is spent, each batch with the next seed (as the generic planner's calls).
 class CandidateSource {
  public:
   CandidateSource(const Mesh& mesh, const HandModel& hand, PlannerKind planner,
@@ -106,7 +106,7 @@ class CandidateSource {
       while (order_.empty() && explorations_ < kMaxExplorations) explore(time_left_s, stats);
       if (order_.empty()) {
         if (plan_.fallback_attempts <= 0) return std::nullopt;
-        sampling_ = true;  // then the generic planner's sampled surface points
+        sampling_ = true;  // then the sampled fallback's surface points
         return next(time_left_s, stats);
       }
       const PlanResult r = plan_cord_grasps_from_regions(mesh_, hand_, *collider_, regions_, params,
@@ -131,7 +131,9 @@ class CandidateSource {
       params.quality.seed = params.seed;
       if (sampling_) params.max_attempts = plan_.fallback_attempts;
       const PlanResult r =
-          plan_generic_grasps(mesh_, hand_, *collider_, params, cancel_, &*context_);
+          sampling_
+              ? plan_cord_fallback_grasps(mesh_, hand_, *collider_, params, cancel_, &*context_)
+              : plan_generic_grasps(mesh_, hand_, *collider_, params, cancel_, &*context_);
       add_stats(stats, r.stats);
       if (sampling_) stats.sampled_attempts += r.stats.attempts;
       if (!r.grasps.empty()) return r.grasps.front();

@@ -6,6 +6,7 @@
 #include "cordgrasp/core/plan_cord_grasps.h"
 #include "cordgrasp/core/plan_generic_grasps.h"
 #include "cordgrasp/core/shapes.h"
+#include "plan_internal.h"
 #include "test_hands.h"
 
 namespace cordgrasp {
@@ -136,7 +137,7 @@ TEST(PlanCordGrasps, NoRegionsGiveNoGraspAndNoCrash) {
   EXPECT_FALSE(plan.stats.first_force_closure_s.has_value());
 }
 
-TEST(PlanCordGrasps, SpentRegionsGoOnAtTheGenericPlannersSampledPoints) {
+TEST(PlanCordGrasps, SpentRegionsGoOnAtSampledPointsApproachedToTheFarSide) {
   const Mesh box = make_box_mesh({0.04, 0.05, 0.06});
   const HandModel hand = test::make_three_finger_hand();
   auto collider = make_bullet_hand_collider(hand, box);
@@ -146,9 +147,9 @@ TEST(PlanCordGrasps, SpentRegionsGoOnAtTheGenericPlannersSampledPoints) {
   params.time_limit_s = 30.0;
   params.max_attempts = 0;  // the regions' attempts spent at once
   const PlanResult plan = plan_cord_grasps(box, hand, *collider, CordParams{}, params);
-  PlanParams generic = params;
-  generic.max_attempts = params.fallback_attempts;
-  const PlanResult sampled = plan_generic_grasps(box, hand, *collider, generic);
+  PlanParams fallback = params;
+  fallback.max_attempts = params.fallback_attempts;
+  const PlanResult sampled = plan_cord_fallback_grasps(box, hand, *collider, fallback);
   ASSERT_EQ(plan.grasps.size(), 2u);
   ASSERT_EQ(sampled.grasps.size(), 2u);
   EXPECT_EQ(plan.stats.regions_processed, 0);
@@ -167,6 +168,54 @@ TEST(PlanCordGrasps, SpentRegionsGoOnAtTheGenericPlannersSampledPoints) {
   EXPECT_EQ(paper.stats.attempts, 0);
   EXPECT_EQ(paper.stats.sampled_attempts, 0);
   EXPECT_TRUE(paper.stats.attempt_budget_reached);
+}
+
+TEST(PlanCordGrasps, TheFallbackClosesAcrossASphereWhereTheGenericPlannerTouchesItsNearSide) {
+  // A hand whose GCP lies where its fingertips meet, as `hand init` drafts it. At the same
+  // sampled points (same seed) the generic baseline starts the GCP on the surface and only
+  // retreats: the fingertips close on the sphere's near cap. The fallback moves the hand in
+  // along the normal until the GCP reaches the sphere's middle: the fingers close across it.
+  constexpr double kRadiusM = 0.02;
+  constexpr double kFingertipsMeetM = 0.09;  // above the palm, fingers 0.092 m long
+  const Mesh sphere = make_sphere_mesh(kRadiusM);
+  HandModel hand = test::make_three_finger_hand();
+  hand.gcp.X_LG.translation() = Eigen::Vector3d(0, 0, kFingertipsMeetM);
+  auto collider = make_bullet_hand_collider(hand, sphere);
+  PlanParams params;
+  params.grasps = 1000;  // count every force-closure grasp of the attempts
+  params.max_attempts = 60;
+  params.seed = 5;
+  params.time_limit_s = 60.0;
+  const PlanResult generic = plan_generic_grasps(sphere, hand, *collider, params);
+  const PlanResult fallback = plan_cord_fallback_grasps(sphere, hand, *collider, params);
+  ASSERT_EQ(generic.stats.attempts, 60);
+  ASSERT_EQ(fallback.stats.attempts, 60);
+  EXPECT_GT(fallback.stats.force_closure, generic.stats.force_closure + 30);
+  // GCP depth below the surface (the sphere is centred at the origin). The face normal through
+  // a point away from its face's centre passes the centre by up to half a face (1.3 mm here).
+  auto depth_m = [&](const Grasp& g) { return kRadiusM - g.X_OG.translation().norm(); };
+  constexpr double kPlacementToleranceM = 2e-3;
+  for (const Grasp& g : generic.grasps) EXPECT_LT(depth_m(g), kPlacementToleranceM);
+  ASSERT_FALSE(fallback.grasps.empty());
+  for (const Grasp& g : fallback.grasps) EXPECT_NEAR(depth_m(g), kRadiusM, kPlacementToleranceM);
+}
+
+TEST(Thickness, IsTheDistanceToTheFarSideAlongTheInwardNormalAndZeroOnAnOpenSide) {
+  const Mesh box = make_box_mesh({0.04, 0.05, 0.06});
+  const Eigen::Vector3d p(0.02, 0.01, -0.01), z = -Eigen::Vector3d::UnitX();
+  EXPECT_NEAR(internal::thickness_m(box, nullptr, p, z, 1.0), 0.04, 1e-12);
+  const Eigen::Vector3d top(0.0, 0.0, 0.03);
+  EXPECT_NEAR(internal::thickness_m(box, nullptr, top, -Eigen::Vector3d::UnitZ(), 1.0), 0.06,
+              1e-12);
+  EXPECT_EQ(internal::thickness_m(box, nullptr, p, z, 0.03), 0.0);  // beyond the reach
+  Mesh open = box;  // without the far (−x) face the ray leaves the soup
+  open.triangles.clear();
+  for (const Eigen::Vector3i& t : box.triangles) {
+    bool far_face = true;
+    for (int k = 0; k < 3; ++k) far_face = far_face && box.vertices[t[k]].x() < -0.019;
+    if (!far_face) open.triangles.push_back(t);
+  }
+  EXPECT_EQ(internal::thickness_m(open, nullptr, p, z, 1.0), 0.0);
 }
 
 TEST(PlanCordGrasps, RegionsThatGiveTheGraspsSampleNothing) {

@@ -40,7 +40,7 @@ struct PlanParams {
   /// gives the same plan on any machine. The cord planner also stops when its regions run out.
   int max_attempts = 500;
   /// cord: when its regions or max_attempts are spent with fewer than `grasps` grasps, up to
-  /// this many more attempts at sampled surface points, as the generic planner makes them (a
+  /// this many more attempts at sampled surface points, approached to the object's middle (a
   /// hand whose digits do not suit the regions' placement); 0 = none (the paper's planner).
   int fallback_attempts = 500;
   /// Both planners return only grasps that differ pairwise (validated planning accepts so).

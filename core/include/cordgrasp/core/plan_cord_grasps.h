@@ -50,11 +50,22 @@ PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand
 std::vector<int> cord_region_order(const std::vector<GraspRegion>& regions, double palm_width_m,
                                    const CordParams& cord);
 
+/// The cord planner's fallback on its own (docs/algorithm.md §10): the generic planner's sampled
+/// surface points (params.seed, up to params.max_attempts attempts), each approached along the
+/// inward normal until the GCP reaches the object's middle (half its thickness there) or the
+/// hand collides, not only retreated from the surface: opposed digits then close across the
+/// object instead of pinching the near surface. Grasps without a region. `context` as for
+/// plan_cord_grasps_from_regions().
+PlanResult plan_cord_fallback_grasps(const Mesh& mesh, const HandModel& hand,
+                                     HandObjectCollider& collider, const PlanParams& params,
+                                     const CancelToken& cancel = {},
+                                     const PlanContext* context = nullptr);
+
 /// The cord-driven planner (paper §III–§V): explore_cords() with W_palm = palm_width(hand), then
 /// plan_cord_grasps_from_regions() in cord_region_order(); with fewer than params.grasps grasps
-/// when the regions or params.max_attempts are spent, up to params.fallback_attempts more at
-/// the generic planner's sampled surface points (plan_generic_grasps(), params.seed; grasps
-/// without a region, PlanStats::sampled_attempts). The exploration shares
+/// when the regions or params.max_attempts are spent, up to params.fallback_attempts more
+/// attempts as plan_cord_fallback_grasps() makes them (params.seed; grasps without a region,
+/// PlanStats::sampled_attempts). The exploration shares
 /// params.time_limit_s (its own cap is min(cord.time_limit_s, params.time_limit_s)).
 /// `exploration`, when given, receives its stats; `cancel` stops the finger stage early (the
 /// exploration runs to its end). `threads`: explore_cords()'s, and above 1 the object's part of
