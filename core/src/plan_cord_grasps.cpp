@@ -36,15 +36,8 @@ double approach_travel_m(const Mesh& mesh, const GraspRegion& region,
 PlanResult plan_cord_fallback_grasps(const Mesh& mesh, const HandModel& hand,
                                      HandObjectCollider& collider, const PlanParams& params,
                                      const CancelToken& cancel, const PlanContext* context) {
-  const auto start = std::chrono::steady_clock::now();
-  PlanResult result;
-  std::optional<PlanContext> own;
-  if (!context) own = internal::make_plan_context(mesh, hand, collider, params, result.stats);
-  internal::sample_surface_grasps(mesh, hand, collider, context ? *context : *own, params,
-                                  internal::SampledApproach::kToMiddle, params.max_attempts, start,
-                                  0.0, cancel, result);
-  result.stats.total_s = internal::seconds_since(start);
-  return result;
+  return internal::plan_sampled_grasps(mesh, hand, collider, params,
+                                       internal::SampledApproach::kToMiddle, cancel, context);
 }
 
 PlanResult plan_cord_grasps_from_regions(const Mesh& mesh, const HandModel& hand,

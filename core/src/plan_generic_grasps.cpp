@@ -34,19 +34,25 @@ Eigen::Vector3d outward_face_normal(const Mesh& mesh, int tri, const Eigen::Vect
 PlanResult plan_generic_grasps(const Mesh& mesh, const HandModel& hand,
                                HandObjectCollider& collider, const PlanParams& params,
                                const CancelToken& cancel, const PlanContext* context) {
-  const auto start = std::chrono::steady_clock::now();
-  PlanResult result;
-  std::optional<PlanContext> own;
-  if (!context) own = internal::make_plan_context(mesh, hand, collider, params, result.stats);
-  const PlanContext& ctx = context ? *context : *own;
-  internal::sample_surface_grasps(mesh, hand, collider, ctx, params,
-                                  internal::SampledApproach::kNone, params.max_attempts, start, 0.0,
-                                  cancel, result);
-  result.stats.total_s = internal::seconds_since(start);
-  return result;
+  return internal::plan_sampled_grasps(mesh, hand, collider, params,
+                                       internal::SampledApproach::kNone, cancel, context);
 }
 
 namespace internal {
+
+PlanResult plan_sampled_grasps(const Mesh& mesh, const HandModel& hand,
+                               HandObjectCollider& collider, const PlanParams& params,
+                               SampledApproach approach, const CancelToken& cancel,
+                               const PlanContext* context) {
+  const auto start = std::chrono::steady_clock::now();
+  PlanResult result;
+  std::optional<PlanContext> own;
+  if (!context) own = make_plan_context(mesh, hand, collider, params, result.stats);
+  sample_surface_grasps(mesh, hand, collider, context ? *context : *own, params, approach,
+                        params.max_attempts, start, 0.0, cancel, result);
+  result.stats.total_s = seconds_since(start);
+  return result;
+}
 
 double thickness_m(const Mesh& mesh, const MeshBvh* bvh, const Eigen::Vector3d& p_O,
                    const Eigen::Vector3d& z_O, double reach_m) {

@@ -60,4 +60,11 @@ void sample_surface_grasps(const Mesh& mesh, const HandModel& hand, HandObjectCo
                            std::chrono::steady_clock::time_point start, double offset_s,
                            const CancelToken& cancel, PlanResult& result);
 
+/// sample_surface_grasps() on its own, params.max_attempts attempts, timed: the generic
+/// planner (kNone) and the cord planner's fallback (kToMiddle). `context` as for the planners.
+PlanResult plan_sampled_grasps(const Mesh& mesh, const HandModel& hand,
+                               HandObjectCollider& collider, const PlanParams& params,
+                               SampledApproach approach, const CancelToken& cancel,
+                               const PlanContext* context);
+
 }  // namespace cordgrasp::internal
