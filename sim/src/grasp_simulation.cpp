@@ -698,12 +698,24 @@ PhaseResult GraspSimulation::close() {
   if (s.bounded())
     for (const int j : s.actor_joints) s.effort_cap[j] = std::abs(push[j]);
   const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;
+  // Bounded close with failure exits: the close tests the planned grasp, so an object moved or
+  // turned past the held limits from its planned pose in the hand ends it, slipped.
+  const bool off_plan_exit = s.bounded() && s.params.exit_on_failure;
+  const Eigen::Isometry3d X_BO_plan = s.grasp.X_OB.inverse();
+  bool off_plan = false;
+  const auto moved_off_plan = [&] {
+    double turned = 0.0;
+    const double moved = s.pose_change(X_BO_plan, &turned);
+    off_plan = moved >= s.params.held_translation_m || turned >= s.params.held_rotation_rad;
+    return off_plan;
+  };
   const int reach_steps = static_cast<int>(std::ceil(reach_s / s.dt));
   for (int k = 1; k <= reach_steps && !s.blew_up; ++k) {
     const double tau = static_cast<double>(k) / reach_steps;
     s.q_target = q0 + (s.grasp.q - q0) * min_jerk(tau);
     s.qd_feedforward = (s.grasp.q - q0) * (min_jerk_rate(tau) / (reach_steps * s.dt));
     s.step(X_WB0);
+    if (off_plan_exit && moved_off_plan()) break;
   }
   s.qd_feedforward.setZero();
   // Squeeze: every pushing actor joint becomes a spring with its rest point `squeeze` past the
@@ -743,7 +755,7 @@ PhaseResult GraspSimulation::close() {
   bool at_rest = false, lost = false;
   Eigen::Isometry3d X_BO_still = s.X_BO();
   Eigen::VectorXd q_still = bullet::hand_joint_positions(*s.hand_body, n);
-  for (int k = 1; k <= max_steps && !s.blew_up; ++k) {
+  for (int k = 1; k <= max_steps && !s.blew_up && !off_plan; ++k) {
     s.squeeze_fraction = s.bounded() ? 1.0
                                      : std::min(1.0, k * s.dt /
                                                          std::max(s.params.squeeze_ramp_s, s.dt));
@@ -781,13 +793,17 @@ PhaseResult GraspSimulation::close() {
       lost = true;
       break;
     }
+    if (off_plan_exit && moved_off_plan()) break;
   }
   s.squeeze_fraction = 1.0;
-  s.finish(r, s.grasp.X_OB.inverse());
-  if (!at_rest && !s.blew_up)
+  s.finish(r, X_BO_plan);
+  if (off_plan && !s.blew_up)
+    r.detail = "moved off the plan";
+  else if (!at_rest && !s.blew_up)
     r.detail = lost ? "squeeze, out of contact" : "squeeze time limit";
-  // Closing is judged by contact only; the object may well move while the fingers close.
-  if (r.outcome == Outcome::kSlipped) r.outcome = Outcome::kHeld;
+  // The bounded close with failure exits holds the object to its planned pose (the held
+  // limits); the other closes are judged by contact only: the object may move while closing.
+  if (r.outcome == Outcome::kSlipped && !off_plan_exit) r.outcome = Outcome::kHeld;
   s.X_BO_ref = s.X_BO();
   s.closed = true;
   // From now on the servos keep squeezing toward the same targets.

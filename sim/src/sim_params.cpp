@@ -98,7 +98,7 @@ struct ProtocolPreset {
   Protocol protocol;
   double time_step_s;
   int solver_iterations;
-  double lift_time_s, lift_hold_s, shake_time_s;
+  double settle_time_s, lift_height_m, lift_time_s, lift_hold_s, shake_time_s;
   double rock_frequency_hz;  ///< one period in rock_time_s: tilts both ways
   double rock_time_s;
   bool shake_all_axes_at_once;
@@ -106,12 +106,14 @@ struct ProtocolPreset {
   double squeeze_max_time_s, rest_exit_time_s;
   bool exit_on_failure;
 };
+// clang-format off
 constexpr ProtocolPreset kPresets[] = {
-    // protocol           step        iter lift hold shake rock Hz, s  all axes g6  reach gap  travel squeeze rest exit
-    {Protocol::kQuick,    1.0 / 960.0, 50, 0.5, 0.3, 0.5, 2.0, 0.5, false, 0.5, 0.8, 0.0,  0.0,  0.5, 0.1, true},
-    {Protocol::kStandard, 1.0 / 960.0, 30, 0.5, 0.3, 0.5, 2.0, 0.5, true,  0.5, 0.0, 3e-3, 1e-3, 0.3, 0.1, true},
-    {Protocol::kThorough, 1.0 / 960.0, 50, 1.0, 1.0, 1.0, 1.0, 1.0, false, 1.0, 0.0, 0.0,  0.0,  0.5, 0.0, false},
+    // protocol           step        iter settle lift m, s  hold shake rock Hz, s  all axes g6  reach gap  travel squeeze rest exit
+    {Protocol::kQuick,    1.0 / 960.0, 50, 0.05, 0.10, 0.5,  0.3, 0.5, 2.0, 0.5, false, 0.5, 0.8, 0.0,  0.0,  0.5, 0.1, true},
+    {Protocol::kStandard, 1.0 / 960.0, 30, 0.01, 0.03, 0.27, 0.3, 0.5, 2.0, 0.5, true,  0.5, 0.0, 3e-3, 1e-3, 0.3, 0.1, true},
+    {Protocol::kThorough, 1.0 / 960.0, 50, 0.05, 0.10, 1.0,  1.0, 1.0, 1.0, 1.0, false, 1.0, 0.0, 0.0,  0.0,  0.5, 0.0, false},
 };
+// clang-format on
 
 }  // namespace
 
@@ -143,6 +145,8 @@ void apply_protocol(Protocol protocol, SimParams* params) {
     p.protocol = protocol;
     p.time_step_s = preset.time_step_s;
     p.solver_iterations = preset.solver_iterations;
+    p.settle_time_s = preset.settle_time_s;
+    p.lift_height_m = preset.lift_height_m;
     p.lift_time_s = preset.lift_time_s;
     p.lift_hold_s = preset.lift_hold_s;
     p.shake_time_s = preset.shake_time_s;

@@ -371,6 +371,9 @@ TEST(ValidateGrasp, BoundedCloseEndsOnceTheSqueezedOutObjectLeavesTheHand) {
   }
   SimParams params = gripper_params(Protocol::kStandard);
   params.contact.mu = 0.0;
+  // Limits wide enough that the wedge leaves contact before it is off its planned pose.
+  params.held_translation_m = kWedgeHeight_m;
+  params.held_rotation_rad = 0.5 * M_PI;
   const SimTests lift_only{true, false, false};
   const SimResult r = validate_grasp(wedge, gripper(), pinch, params, lift_only);
   SimParams to_the_limit = params;
@@ -385,6 +388,56 @@ TEST(ValidateGrasp, BoundedCloseEndsOnceTheSqueezedOutObjectLeavesTheHand) {
   EXPECT_EQ(close->detail, "squeeze, out of contact");
   EXPECT_EQ(full_close->outcome, Outcome::kDropped);
   EXPECT_LT(close->steps, full_close->steps);
+}
+
+TEST(ValidateGrasp, BoundedCloseFailsAnObjectTurnedOffItsPlannedPose) {
+  // A square prism turned 3° about the approach axis, pinched on two opposite vertical edges
+  // with little friction: the pads' pushes form a couple that turns it until its faces lie
+  // flat against the pads, ~4° within the 1 mm squeeze travel. The bounded close holds the
+  // object to its planned pose: past the turn limit (1° here, 15° by default) it is slipped
+  // in close, at once, where a close judged by contact alone (no failure exits) calls the
+  // turned object held.
+  constexpr double kSide_m = 0.05;
+  constexpr double kPlannedTurn_rad = 3.0 * M_PI / 180.0;
+  constexpr double kTurnLimit_rad = 1.0 * M_PI / 180.0;
+  Mesh prism = make_box_mesh(Eigen::Vector3d::Constant(kSide_m));
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(kPlannedTurn_rad, Eigen::Vector3d::UnitZ()).matrix();
+  for (Eigen::Vector3d& v : prism.vertices) v = R * v;
+  double half_width = 0.0;
+  for (const Eigen::Vector3d& v : prism.vertices) half_width = std::max(half_width, v.x());
+  Grasp pinch =
+      test::top_down_pinch(gripper(), Eigen::Vector3d::Zero(), half_width, kOpenGripper_m);
+  const auto X_OL = link_poses(gripper(), pinch.q, pinch.X_OB);
+  for (const Joint& joint : gripper().joints) {
+    if (joint.type != JointType::kPrismatic) continue;
+    const double side = X_OL[static_cast<size_t>(joint.child_link)].translation().x() > 0 ? 1 : -1;
+    Contact c;
+    c.link = joint.child_link;
+    for (const Eigen::Vector3d& v : prism.vertices)
+      if (side * v.x() > half_width - 1e-9) c.p_O = Eigen::Vector3d(v.x(), v.y(), 0.0);
+    c.n_O = Eigen::Vector3d(side, 0, 0);
+    pinch.contacts.push_back(c);
+  }
+  constexpr double kSlipperyMu = 0.1;
+  SimParams params = gripper_params(Protocol::kStandard);
+  params.contact.mu = kSlipperyMu;
+  params.held_rotation_rad = kTurnLimit_rad;
+  const SimTests lift_only{true, false, false};
+  const SimResult r = validate_grasp(prism, gripper(), pinch, params, lift_only);
+  SimParams contact_only = params;
+  contact_only.exit_on_failure = false;
+  const SimResult turned = validate_grasp(prism, gripper(), pinch, contact_only, lift_only);
+  const PhaseResult* close = r.phase("close");
+  const PhaseResult* turned_close = turned.phase("close");
+  ASSERT_NE(close, nullptr);
+  ASSERT_NE(turned_close, nullptr);
+  EXPECT_EQ(close->outcome, Outcome::kSlipped);
+  EXPECT_EQ(close->detail, "moved off the plan");
+  EXPECT_GE(close->rotation_rad, kTurnLimit_rad);
+  EXPECT_EQ(r.outcome, Outcome::kSlipped);
+  EXPECT_EQ(turned_close->outcome, Outcome::kHeld);
+  EXPECT_GE(turned_close->rotation_rad, kTurnLimit_rad);
+  EXPECT_LT(close->steps, turned_close->steps);
 }
 
 TEST(ValidateGrasp, FlagsAPreshapeHandPlacedIntoTheObject) {
@@ -702,9 +755,16 @@ TEST(ApplyProtocol, StandardIsTheDefaultAndThoroughTheLongProtocol) {
   const SimParams quick = sim_params_for(Protocol::kQuick);
   EXPECT_EQ(quick.time_step_s, 1.0 / 960.0);
   EXPECT_FALSE(quick.shake_all_axes_at_once);
-  // Standard: the bounded close, quick's lift and exits, shake and rock along all axes at once.
+  // Standard: the bounded close, quick's exits, a shorter lift at quick's peak acceleration
+  // (minimum jerk: ∝ height / time²), shake and rock along all axes at once.
   const SimParams standard = sim_params_for(Protocol::kStandard);
   EXPECT_EQ(standard.protocol, Protocol::kStandard);
+  constexpr double kSamePeakAccelRelTol = 0.05;
+  const auto lift_accel = [](const SimParams& p) {
+    return p.lift_height_m / (p.lift_time_s * p.lift_time_s);
+  };
+  EXPECT_LT(standard.lift_time_s, quick.lift_time_s);
+  EXPECT_NEAR(lift_accel(standard) / lift_accel(quick), 1.0, kSamePeakAccelRelTol);
   EXPECT_GT(standard.reach_start_gap_m, 0.0);
   EXPECT_GT(standard.squeeze_travel_m, 0.0);
   EXPECT_LT(standard.squeeze_travel_m, 0.01);
@@ -738,12 +798,12 @@ TEST(ApplyProtocol, StandardIsTheDefaultAndThoroughTheLongProtocol) {
   // Applying a preset leaves the fields it does not own.
   SimParams custom;
   custom.contact.mu = 0.3;
-  custom.lift_height_m = 0.2;
+  custom.shake_amplitude_m = 0.03;
   custom.time_step_s = 1.0 / 2000.0;
   apply_protocol(Protocol::kThorough, &custom);
   EXPECT_EQ(custom.time_step_s, 1.0 / 960.0);  // a preset field
   EXPECT_EQ(custom.contact.mu, 0.3);
-  EXPECT_EQ(custom.lift_height_m, 0.2);
+  EXPECT_EQ(custom.shake_amplitude_m, 0.03);
   EXPECT_EQ(custom.lift_time_s, 1.0);
 }
 

@@ -274,14 +274,12 @@ class StandardRun {
   }
 
   /// Outcome against `X_BO_reference` (docs/physics.md §4); records a failure in `r`.
-  bool verdict(StandardCheckResult& r, const char* phase,
-               const Eigen::Isometry3d& X_BO_reference, bool ran) {
-    const bool closing = std::string(phase) == "close";  // judged by contact only
+  bool verdict(StandardCheckResult& r, const char* phase, const Eigen::Isometry3d& X_BO_reference,
+               bool ran) {
     r.shift_m = pose_change(X_BO_reference, &r.turn_rad);
     if (blew_up_) r.outcome = "unstable";
     else if (contact_count() == 0) r.outcome = "dropped";
-    else if (closing || (ran && r.shift_m < p_.held_translation_m &&
-                         r.turn_rad < p_.held_rotation_rad))
+    else if (ran && r.shift_m < p_.held_translation_m && r.turn_rad < p_.held_rotation_rad)
       r.outcome = "held";
     else r.outcome = "slipped";
     r.held = r.outcome == "held";
@@ -340,6 +338,7 @@ class StandardRun {
         feedforward_[a] = (plan_[a] - q0[a]) * min_jerk_rate(tau) / (reach_steps * dt_);
       }
       step(X);
+      if (moved_off_plan()) return;
     }
     target_ = plan_;
     squeezing_ = true;
@@ -365,8 +364,17 @@ class StandardRun {
       stalled = still ? stalled + 1 : 0;
       if (!still) X_BO_still = X_BO();
       if (k >= min_steps && stalled >= stall_steps) break;
+      if (moved_off_plan()) break;
     }
     r.squeeze_s = std::min(k, max_steps) * dt_;
+  }
+
+  /// Bullet's bounded close: the object moved or turned past the held limits from its planned
+  /// pose in the hand ends the close (slipped).
+  bool moved_off_plan() const {
+    double turned = 0.0;
+    const double moved = pose_change(X_BO_plan_, &turned);
+    return moved >= p_.held_translation_m || turned >= p_.held_rotation_rad;
   }
 
   mjModel* m_;

@@ -15,7 +15,7 @@ namespace cordgrasp::mujoco_check {
 struct StandardCheckParams {
   double time_step_s = 1e-3;         ///< MuJoCo time step [s]; 0: the scene's
   double gravity_mps2 = 9.81;        ///< along the approach (+z of the GCP) in lift and shake
-  double settle_time_s = 0.05;       ///< settle: gravity off, joints held at the reach start
+  double settle_time_s = 0.01;       ///< settle: gravity off, joints held at the reach start
   /// Squeeze: the servo target approaches the squeeze target as Bullet's velocity servo
   /// does, at this gain × the distance left [1/s].
   double servo_gain_per_s = 20.0;
@@ -33,8 +33,8 @@ struct StandardCheckParams {
   double squeeze_min_time_s = 0.05;  ///< close: stall is not tested before this [s]
   double stall_speed = 0.02;         ///< actor joints slower than this × their speed...
   double stall_time_s = 0.05;        ///< ...and the object at rest this long: stalled [s]
-  double lift_height_m = 0.10;       ///< lift: rise against gravity...
-  double lift_time_s = 0.5;          ///< ...in this time (minimum jerk) [s]...
+  double lift_height_m = 0.03;       ///< lift: rise against gravity...
+  double lift_time_s = 0.27;         ///< ...in this time (minimum jerk) [s]...
   double lift_hold_s = 0.3;          ///< ...then hold at most this long (rest exit) [s]
   double shake_amplitude_m = 0.02;   ///< shake: ±amplitude along x_W, y_W, z_W at once
   double shake_frequency_hz = 2.0;

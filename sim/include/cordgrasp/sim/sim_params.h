@@ -169,7 +169,7 @@ struct SimParams {
   Protocol protocol = Protocol::kStandard;
   WorldFrame world_frame = WorldFrame::kApproachDown;
   double gravity_mps2 = 9.81;         ///< magnitude, along −z_W in lift/shake
-  double settle_time_s = 0.05;        ///< settle: gravity off, preshape held
+  double settle_time_s = 0.01;        ///< settle: gravity off, reach start held (preset)
   double squeeze_max_time_s = 0.3;    ///< close: squeeze stage time limit (preset)
   double squeeze_ramp_s = 0.1;        ///< close: the squeeze effort ramps in linearly over this
   double squeeze_min_time_s = 0.05;   ///< close: stall is not tested before this
@@ -177,8 +177,8 @@ struct SimParams {
   /// close: moved less than this × that speed × stall_time_s over the window)...
   double stall_speed = 0.02;
   double stall_time_s = 0.05;         ///< ...for this long have stalled
-  double lift_height_m = 0.10;        ///< lift: rise along +z_W...
-  double lift_time_s = 0.5;           ///< ...in this time (minimum-jerk profile)... (preset)
+  double lift_height_m = 0.03;        ///< lift: rise along +z_W... (preset)
+  double lift_time_s = 0.27;          ///< ...in this time (minimum-jerk profile)... (preset)
   double lift_hold_s = 0.3;           ///< ...then hold at most this long (preset)
   double shake_amplitude_m = 0.02;    ///< shake: ±amplitude along x_W, y_W, z_W in turn
   double shake_frequency_hz = 2.0;    ///< (at least 1 / shake_time_s is used: both ways)
