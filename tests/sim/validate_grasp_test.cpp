@@ -8,6 +8,7 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -349,6 +350,36 @@ Mesh make_wedge_mesh(double base_m, double height_m) {
   return m;
 }
 
+/// Adds to `pinch` one planned contact per pad of the gripper: `contact_at(side)` with side
+/// +1 for the pad on +x of the object, −1 for the other (its link is set here).
+template <class ContactAt>
+void add_pad_contacts(Grasp* pinch, const ContactAt& contact_at) {
+  const auto X_OL = link_poses(gripper(), pinch->q, pinch->X_OB);
+  for (const Joint& joint : gripper().joints) {
+    if (joint.type != JointType::kPrismatic) continue;
+    const double side = X_OL[static_cast<size_t>(joint.child_link)].translation().x() > 0 ? 1 : -1;
+    Contact c = contact_at(side);
+    c.link = joint.child_link;
+    pinch->contacts.push_back(c);
+  }
+}
+
+/// The close phase of `pinch` on `mesh` (tests: lift) under `params`, and under `params`
+/// without failure exits (the close judged by contact alone, run to its limits).
+std::pair<PhaseResult, PhaseResult> closes_with_and_without_exits(const Mesh& mesh,
+                                                                  const Grasp& pinch,
+                                                                  const SimParams& params) {
+  const SimTests lift_only{true, false, false};
+  SimParams no_exits = params;
+  no_exits.exit_on_failure = false;
+  const SimResult with = validate_grasp(mesh, gripper(), pinch, params, lift_only);
+  const SimResult without = validate_grasp(mesh, gripper(), pinch, no_exits, lift_only);
+  const PhaseResult* a = with.phase("close");
+  const PhaseResult* b = without.phase("close");
+  if (a == nullptr || b == nullptr) throw std::runtime_error("no close phase");
+  return {*a, *b};
+}
+
 TEST(ValidateGrasp, BoundedCloseEndsOnceTheSqueezedOutObjectLeavesTheHand) {
   // A wedge, apex toward the palm, pinched on its sloped faces without friction: the pads'
   // pushes along the face normals squeeze it out of the hand, away from the palm (gravity is
@@ -359,35 +390,23 @@ TEST(ValidateGrasp, BoundedCloseEndsOnceTheSqueezedOutObjectLeavesTheHand) {
   const Mesh wedge = make_wedge_mesh(kWedgeBase_m, kWedgeHeight_m);
   const double half_width = 0.25 * kWedgeBase_m;  // at z = 0, half way up
   Grasp pinch = test::top_down_pinch(gripper(), Eigen::Vector3d::Zero(), half_width, kOpenGripper_m);
-  const auto X_OL = link_poses(gripper(), pinch.q, pinch.X_OB);
-  for (const Joint& joint : gripper().joints) {
-    if (joint.type != JointType::kPrismatic) continue;
-    const double side = X_OL[static_cast<size_t>(joint.child_link)].translation().x() > 0 ? 1 : -1;
+  add_pad_contacts(&pinch, [&](double side) {
     Contact c;
-    c.link = joint.child_link;
     c.p_O = Eigen::Vector3d(side * half_width, 0, 0);
     c.n_O = Eigen::Vector3d(side * kWedgeHeight_m, 0, 0.5 * kWedgeBase_m).normalized();
-    pinch.contacts.push_back(c);
-  }
+    return c;
+  });
   SimParams params = gripper_params(Protocol::kStandard);
   params.contact.mu = 0.0;
   // Limits wide enough that the wedge leaves contact before it is off its planned pose.
   params.held_translation_m = kWedgeHeight_m;
   params.held_rotation_rad = 0.5 * M_PI;
-  const SimTests lift_only{true, false, false};
-  const SimResult r = validate_grasp(wedge, gripper(), pinch, params, lift_only);
-  SimParams to_the_limit = params;
-  to_the_limit.exit_on_failure = false;
-  const SimResult full = validate_grasp(wedge, gripper(), pinch, to_the_limit, lift_only);
-  const PhaseResult* close = r.phase("close");
-  const PhaseResult* full_close = full.phase("close");
-  ASSERT_NE(close, nullptr);
-  ASSERT_NE(full_close, nullptr);
-  EXPECT_GT(close->max_contact_count, 0);
-  EXPECT_EQ(close->outcome, Outcome::kDropped);
-  EXPECT_EQ(close->detail, "squeeze, out of contact");
-  EXPECT_EQ(full_close->outcome, Outcome::kDropped);
-  EXPECT_LT(close->steps, full_close->steps);
+  const auto [close, full_close] = closes_with_and_without_exits(wedge, pinch, params);
+  EXPECT_GT(close.max_contact_count, 0);
+  EXPECT_EQ(close.outcome, Outcome::kDropped);
+  EXPECT_EQ(close.detail, "squeeze, out of contact");
+  EXPECT_EQ(full_close.outcome, Outcome::kDropped);
+  EXPECT_LT(close.steps, full_close.steps);
 }
 
 TEST(ValidateGrasp, BoundedCloseFailsAnObjectTurnedOffItsPlannedPose) {
@@ -407,37 +426,24 @@ TEST(ValidateGrasp, BoundedCloseFailsAnObjectTurnedOffItsPlannedPose) {
   for (const Eigen::Vector3d& v : prism.vertices) half_width = std::max(half_width, v.x());
   Grasp pinch =
       test::top_down_pinch(gripper(), Eigen::Vector3d::Zero(), half_width, kOpenGripper_m);
-  const auto X_OL = link_poses(gripper(), pinch.q, pinch.X_OB);
-  for (const Joint& joint : gripper().joints) {
-    if (joint.type != JointType::kPrismatic) continue;
-    const double side = X_OL[static_cast<size_t>(joint.child_link)].translation().x() > 0 ? 1 : -1;
-    Contact c;
-    c.link = joint.child_link;
+  add_pad_contacts(&pinch, [&](double side) {
+    Contact c;  // on the vertical edge the pad meets
     for (const Eigen::Vector3d& v : prism.vertices)
       if (side * v.x() > half_width - 1e-9) c.p_O = Eigen::Vector3d(v.x(), v.y(), 0.0);
     c.n_O = Eigen::Vector3d(side, 0, 0);
-    pinch.contacts.push_back(c);
-  }
+    return c;
+  });
   constexpr double kSlipperyMu = 0.1;
   SimParams params = gripper_params(Protocol::kStandard);
   params.contact.mu = kSlipperyMu;
   params.held_rotation_rad = kTurnLimit_rad;
-  const SimTests lift_only{true, false, false};
-  const SimResult r = validate_grasp(prism, gripper(), pinch, params, lift_only);
-  SimParams contact_only = params;
-  contact_only.exit_on_failure = false;
-  const SimResult turned = validate_grasp(prism, gripper(), pinch, contact_only, lift_only);
-  const PhaseResult* close = r.phase("close");
-  const PhaseResult* turned_close = turned.phase("close");
-  ASSERT_NE(close, nullptr);
-  ASSERT_NE(turned_close, nullptr);
-  EXPECT_EQ(close->outcome, Outcome::kSlipped);
-  EXPECT_EQ(close->detail, "moved off the plan");
-  EXPECT_GE(close->rotation_rad, kTurnLimit_rad);
-  EXPECT_EQ(r.outcome, Outcome::kSlipped);
-  EXPECT_EQ(turned_close->outcome, Outcome::kHeld);
-  EXPECT_GE(turned_close->rotation_rad, kTurnLimit_rad);
-  EXPECT_LT(close->steps, turned_close->steps);
+  const auto [close, turned_close] = closes_with_and_without_exits(prism, pinch, params);
+  EXPECT_EQ(close.outcome, Outcome::kSlipped);
+  EXPECT_EQ(close.detail, "moved off the plan");
+  EXPECT_GE(close.rotation_rad, kTurnLimit_rad);
+  EXPECT_EQ(turned_close.outcome, Outcome::kHeld);
+  EXPECT_GE(turned_close.rotation_rad, kTurnLimit_rad);
+  EXPECT_LT(close.steps, turned_close.steps);
 }
 
 TEST(ValidateGrasp, FlagsAPreshapeHandPlacedIntoTheObject) {
