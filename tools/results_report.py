@@ -437,7 +437,7 @@ def physics(in_dir, out, repeats, hands):
     out.append("## Physics: hold rate through lift + shake\n")
     out.append(
         f"The first force-closure grasp of each attempt is simulated in Bullet (settle, close, "
-        f"lift 10 cm, shake ±2 cm and ±15°; `cordgrasp validate` defaults, μ = the planner's "
+        f"lift, shake ±2 cm and ±15°; `cordgrasp validate` defaults, μ = the planner's "
         f"0.5). Hands: {hands}; {repeats} attempt(s) per object and planner. Held = the object "
         "stayed in the hand through every test; the rate is over the attempts that produced a "
         "grasp. `kit` is the Dex-Net scale, `kit_x2` the KIT meshes at `--scale 2`. The paper "

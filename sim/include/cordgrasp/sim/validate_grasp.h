@@ -16,7 +16,7 @@ namespace cordgrasp {
 
 /// Which tests validate_grasp() runs after settle and close.
 struct SimTests {
-  bool lift = true;      ///< lift 10 cm, then hold (gravity −z_W; SimParams durations)
+  bool lift = true;      ///< lift, then hold (gravity −z_W; SimParams height and durations)
   bool shake = true;     ///< after lift: ±2 cm along x, y, z, then rock ±15° about x, y, z
   bool gravity6 = true;  ///< from the closed grasp again: hand fixed, gravity ±x, ±y, ±z
 };
