@@ -98,8 +98,9 @@ struct ProtocolPreset {
   Protocol protocol;
   double time_step_s;
   int solver_iterations;
-  double settle_time_s, lift_height_m, lift_time_s, lift_hold_s, shake_time_s;
-  double rock_frequency_hz;  ///< one period in rock_time_s: tilts both ways
+  double settle_time_s, lift_height_m, lift_time_s, lift_hold_s;
+  double shake_amplitude_m, shake_frequency_hz, shake_time_s;
+  double rock_angle_deg, rock_frequency_hz;  ///< one period in rock_time_s: tilts both ways
   double rock_time_s;
   bool shake_all_axes_at_once;
   double gravity6_time_s, reach_start_fraction, reach_start_gap_m, squeeze_travel_m;
@@ -108,10 +109,10 @@ struct ProtocolPreset {
 };
 // clang-format off
 constexpr ProtocolPreset kPresets[] = {
-    // protocol           step        iter settle lift m, s  hold shake rock Hz, s  all axes g6  reach gap  travel squeeze rest exit
-    {Protocol::kQuick,    1.0 / 960.0, 50, 0.05, 0.10, 0.5,  0.3, 0.5, 2.0, 0.5, false, 0.5, 0.8, 0.0,  0.0,  0.5, 0.1, true},
-    {Protocol::kStandard, 1.0 / 960.0, 30, 0.01, 0.03, 0.27, 0.3, 0.5, 2.0, 0.5, true,  0.5, 0.0, 3e-3, 1e-3, 0.3, 0.1, true},
-    {Protocol::kThorough, 1.0 / 960.0, 50, 0.05, 0.10, 1.0,  1.0, 1.0, 1.0, 1.0, false, 1.0, 0.0, 0.0,  0.0,  0.5, 0.0, false},
+    // protocol           step        iter settle lift m, s  hold shake m, Hz, s   rock °, Hz, s   all axes g6  reach gap  travel squeeze rest exit
+    {Protocol::kQuick,    1.0 / 960.0, 50, 0.05, 0.10, 0.5,  0.3, 0.02,  2.0, 0.5,  15.0, 2.0, 0.5,  false, 0.5, 0.8, 0.0,  0.0,  0.5, 0.1, true},
+    {Protocol::kStandard, 1.0 / 960.0, 30, 0.01, 0.03, 0.27, 0.3, 0.005, 4.0, 0.25, 7.5,  4.0, 0.25, true,  0.5, 0.0, 3e-3, 1e-3, 0.3, 0.1, true},
+    {Protocol::kThorough, 1.0 / 960.0, 50, 0.05, 0.10, 1.0,  1.0, 0.02,  2.0, 1.0,  15.0, 1.0, 1.0,  false, 1.0, 0.0, 0.0,  0.0,  0.5, 0.0, false},
 };
 // clang-format on
 
@@ -149,7 +150,10 @@ void apply_protocol(Protocol protocol, SimParams* params) {
     p.lift_height_m = preset.lift_height_m;
     p.lift_time_s = preset.lift_time_s;
     p.lift_hold_s = preset.lift_hold_s;
+    p.shake_amplitude_m = preset.shake_amplitude_m;
+    p.shake_frequency_hz = preset.shake_frequency_hz;
     p.shake_time_s = preset.shake_time_s;
+    p.rock_angle_rad = preset.rock_angle_deg * M_PI / 180.0;
     p.rock_frequency_hz = preset.rock_frequency_hz;
     p.rock_time_s = preset.rock_time_s;
     p.shake_all_axes_at_once = preset.shake_all_axes_at_once;

@@ -771,6 +771,21 @@ TEST(ApplyProtocol, StandardIsTheDefaultAndThoroughTheLongProtocol) {
   };
   EXPECT_LT(standard.lift_time_s, quick.lift_time_s);
   EXPECT_NEAR(lift_accel(standard) / lift_accel(quick), 1.0, kSamePeakAccelRelTol);
+  // A shorter shake at quick's peak acceleration (A·ω²) and a shorter rock at quick's peak
+  // angular speed (θ·ω), each one full period.
+  const auto omega = [](double hz) { return 2.0 * M_PI * hz; };
+  const auto shake_accel = [&](const SimParams& p) {
+    return p.shake_amplitude_m * omega(p.shake_frequency_hz) * omega(p.shake_frequency_hz);
+  };
+  const auto rock_speed = [&](const SimParams& p) {
+    return p.rock_angle_rad * omega(p.rock_frequency_hz);
+  };
+  EXPECT_LT(standard.shake_time_s, quick.shake_time_s);
+  EXPECT_LT(standard.rock_time_s, quick.rock_time_s);
+  EXPECT_NEAR(shake_accel(standard) / shake_accel(quick), 1.0, kSamePeakAccelRelTol);
+  EXPECT_NEAR(rock_speed(standard) / rock_speed(quick), 1.0, kSamePeakAccelRelTol);
+  EXPECT_GE(standard.shake_frequency_hz * standard.shake_time_s, 1.0);
+  EXPECT_GE(standard.rock_frequency_hz * standard.rock_time_s, 1.0);
   EXPECT_GT(standard.reach_start_gap_m, 0.0);
   EXPECT_GT(standard.squeeze_travel_m, 0.0);
   EXPECT_LT(standard.squeeze_travel_m, 0.01);
@@ -804,12 +819,12 @@ TEST(ApplyProtocol, StandardIsTheDefaultAndThoroughTheLongProtocol) {
   // Applying a preset leaves the fields it does not own.
   SimParams custom;
   custom.contact.mu = 0.3;
-  custom.shake_amplitude_m = 0.03;
+  custom.held_translation_m = 0.03;
   custom.time_step_s = 1.0 / 2000.0;
   apply_protocol(Protocol::kThorough, &custom);
   EXPECT_EQ(custom.time_step_s, 1.0 / 960.0);  // a preset field
   EXPECT_EQ(custom.contact.mu, 0.3);
-  EXPECT_EQ(custom.shake_amplitude_m, 0.03);
+  EXPECT_EQ(custom.held_translation_m, 0.03);
   EXPECT_EQ(custom.lift_time_s, 1.0);
 }
 
