@@ -90,43 +90,57 @@ class CandidateSource {
     return *closer_;
   }
 
-  /// The next candidate, or nullopt when the planner has none left within `time_left_s`.
+  /// The next candidate, or nullopt when the planner has none left within `time_left_s` (CPU,
+  /// as validated planning counts its budget). The planners' own time limits are wall-clock:
+  /// each call gets the CPU time left as its wall limit, and a call that runs out of wall time
+  /// first (a busy machine) is followed by others while CPU time is left.
   std::optional<Grasp> next(double time_left_s, PlanStats& stats) {
-    if (time_left_s <= 0.0 || cancel_.cancelled()) return std::nullopt;
-    if (!context_) {  // once for every candidate, of either planner
+    const double cpu_start = process_cpu_s();
+    const auto cpu_left_s = [&] { return time_left_s - (process_cpu_s() - cpu_start); };
+    if (!context_ && time_left_s > 0.0) {  // once for every candidate, of either planner
       const auto start = Clock::now();
       context_ = make_plan_context(mesh_, hand_, *collider_, plan_);
       stats.setup_s += seconds_since(start);
     }
-    PlanParams params = plan_;
-    params.grasps = 1;
-    params.time_limit_s = time_left_s;
-    if (planner_ == PlannerKind::kCord && !sampling_) {
-      // Every region processed: explore again with the next seed (new regions), a few times.
-      while (order_.empty() && explorations_ < kMaxExplorations) explore(time_left_s, stats);
-      if (order_.empty()) {
-        if (plan_.fallback_attempts <= 0) return std::nullopt;
-        sampling_ = true;  // then the sampled fallback's surface points
-        return next(time_left_s, stats);
-      }
-      const PlanResult r = plan_cord_grasps_from_regions(mesh_, hand_, *collider_, regions_, params,
-                                                         0.0, &order_, cancel_, &*context_);
-      add_stats(stats, r.stats);
-      if (r.stats.interrupted) return std::nullopt;
-      if (r.grasps.empty()) {
-        order_.clear();
-        return next(time_left_s - r.stats.total_s, stats);
-      }
-      Grasp g = r.grasps.front();
-      const int rank = *g.region_rank;  // position in order_
-      order_.erase(order_.begin(), order_.begin() + rank + 1);
-      g.region_rank = offset_ + rank;
-      g.times.exploration_s = exploration_s_;
-      offset_ += rank + 1;
-      return g;
-    }
-    const double cpu_start = process_cpu_s();
     for (;;) {
+      const double left_s = cpu_left_s();
+      if (left_s <= 0.0 || cancel_.cancelled()) return std::nullopt;
+      PlanParams params = plan_;
+      params.grasps = 1;
+      params.time_limit_s = std::max(left_s, kMinCallWall_s);
+      if (planner_ == PlannerKind::kCord && !sampling_) {
+        // Every region processed: explore again with the next seed (new regions), a few times.
+        while (order_.empty() && explorations_ < kMaxExplorations) explore(left_s, stats);
+        if (order_.empty()) {
+          if (plan_.fallback_attempts <= 0) return std::nullopt;
+          sampling_ = true;  // then the sampled fallback's surface points
+          continue;
+        }
+        const PlanResult r = plan_cord_grasps_from_regions(
+            mesh_, hand_, *collider_, regions_, params, 0.0, &order_, cancel_, &*context_);
+        add_stats(stats, r.stats);
+        if (r.stats.interrupted) return std::nullopt;
+        if (r.grasps.empty()) {
+          // Out of wall time: the regions not reached wait for the next call; otherwise the
+          // regions (or this exploration's attempts) are spent.
+          const size_t processed =
+              std::min(order_.size(), static_cast<size_t>(r.stats.regions_processed));
+          if (r.stats.timed_out && !r.stats.attempt_budget_reached) {
+            order_.erase(order_.begin(), order_.begin() + static_cast<long>(processed));
+            offset_ += static_cast<int>(processed);
+          } else {
+            order_.clear();
+          }
+          continue;
+        }
+        Grasp g = r.grasps.front();
+        const int rank = *g.region_rank;  // position in order_
+        order_.erase(order_.begin(), order_.begin() + rank + 1);
+        g.region_rank = offset_ + rank;
+        g.times.exploration_s = exploration_s_;
+        offset_ += rank + 1;
+        return g;
+      }
       params.seed = plan_.seed + calls_++;
       params.quality.seed = params.seed;
       if (sampling_) params.max_attempts = plan_.fallback_attempts;
@@ -137,13 +151,10 @@ class CandidateSource {
       add_stats(stats, r.stats);
       if (sampling_) stats.sampled_attempts += r.stats.attempts;
       if (!r.grasps.empty()) return r.grasps.front();
+      if (r.stats.interrupted) return std::nullopt;
       // cord: a batch of sampled points without a candidate is followed by others while the
-      // budget (CPU, as validated planning counts it) lasts; the generic planner's empty call
-      // ends it
-      const double left_s = time_left_s - (process_cpu_s() - cpu_start);
-      if (!sampling_ || r.stats.interrupted || left_s <= 0.0 || cancel_.cancelled())
-        return std::nullopt;
-      params.time_limit_s = left_s;
+      // budget lasts; the generic planner's call that spent its attempts ends it
+      if (!sampling_ && !r.stats.timed_out) return std::nullopt;
     }
   }
 
@@ -175,6 +186,8 @@ class CandidateSource {
   std::optional<PlanContext> context_;        ///< made at the first candidate
   std::optional<DrawnPoseCloser> closer_;     ///< made at the first hold test
   static constexpr int kMaxExplorations = 4;  ///< the first and three with later seeds
+  /// Shortest wall-clock limit of a planner call, so that each call makes progress [s].
+  static constexpr double kMinCallWall_s = 0.01;
   int explorations_ = 0;
   std::vector<GraspRegion> regions_;
   std::vector<int> order_;  ///< regions not yet processed, in processing order

@@ -2,18 +2,21 @@
 // validated again by a separate `cordgrasp validate`, and differ pairwise by the diversity
 // threshold; the library algorithm (sim) called directly agrees with the job. The parallel
 // gripper on the box keeps the CPU small (< 2 s per plan).
-#include "cordgrasp/jobs/validated_plan_job.h"
+#include "cordgrasp/sim/plan_validated_grasps.h"
 
 #include <gtest/gtest.h>
+#include <sys/mman.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
-#include <stdexcept>
-#include <unistd.h>
+#include <new>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "cordgrasp/core/assets.h"
 #include "cordgrasp/core/error.h"
@@ -22,7 +25,7 @@
 #include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/validate_job.h"
 #include "cordgrasp/jobs/validate_plan.h"
-#include "cordgrasp/sim/plan_validated_grasps.h"
+#include "cordgrasp/jobs/validated_plan_job.h"
 #include "test_paths.h"
 
 namespace cordgrasp {
@@ -188,6 +191,69 @@ TEST(PlanValidatedGrasps, TheLibraryAlgorithmAcceptsDistinctHeldGraspsAndTheJobA
   EXPECT_THROW(plan_validated_grasps(box.mesh, box.hand, PlannerKind::kCord, in.plan,
                                      std::nullopt, box.v, in.sim),
                std::invalid_argument);
+}
+
+/// Stops and continues this process from a child process, half of the time, until destroyed:
+/// wall-clock time then passes about twice as fast as this process's CPU time (a busy machine).
+class HalfTimeStopper {
+ public:
+  HalfTimeStopper() {
+    done_ = static_cast<std::atomic<int>*>(mmap(nullptr, sizeof(std::atomic<int>),
+                                                PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS,
+                                                -1, 0));
+    new (done_) std::atomic<int>(0);
+    const pid_t parent = ::getpid();
+    child_ = ::fork();
+    if (child_ == 0) {
+      // Each stop is followed by a continue; the flag is read only between the pairs.
+      while (done_->load() == 0) {
+        ::kill(parent, SIGSTOP);
+        ::usleep(kHalfPeriod_us);
+        ::kill(parent, SIGCONT);
+        ::usleep(kHalfPeriod_us);
+      }
+      ::_exit(0);
+    }
+  }
+  ~HalfTimeStopper() {
+    done_->store(1);
+    if (child_ > 0) ::waitpid(child_, nullptr, 0);
+    munmap(done_, sizeof(std::atomic<int>));
+  }
+  HalfTimeStopper(const HalfTimeStopper&) = delete;
+  HalfTimeStopper& operator=(const HalfTimeStopper&) = delete;
+
+ private:
+  static constexpr useconds_t kHalfPeriod_us = 20000;
+  std::atomic<int>* done_ = nullptr;
+  pid_t child_ = -1;
+};
+
+TEST(PlanValidatedGrasps, SpendsItsCpuBudgetWhenWallTimePassesFaster) {
+  // No grasp reaches the quality threshold: the whole budget goes to the planner, first to the
+  // kettle's cord regions (wall-clock limits inside), then to the sampled fallback.
+  constexpr double kBudget_s = 0.8;       ///< CPU
+  constexpr double kSpentFraction = 0.9;  ///< of the budget, at least
+  constexpr double kUnreachableEpsilon = 10.0;
+  const HandModel hand = load_hand("parallel_gripper");
+  const Mesh kettle = load_mesh(test::source_dir() + "/assets/objects/kettle.obj");
+  const PlanJobParams job;
+  PlanParams plan = job.plan;
+  plan.grasps = 1;
+  plan.quality.min_epsilon = kUnreachableEpsilon;
+  plan.quality.contact.soft_finger_radius_m = hand.soft_finger_radius_m;
+  ValidationParams v;
+  v.budget_s = kBudget_s;
+  const SimParams sim = sim_params_for(v.protocol);
+  ValidatedPlan result;
+  {
+    const HalfTimeStopper busy;
+    result = plan_validated_grasps(kettle, hand, PlannerKind::kCord, plan, job.cord, v, sim);
+  }
+  EXPECT_TRUE(result.grasps.empty());
+  EXPECT_EQ(result.validation.stats.force_closure, 0);
+  EXPECT_TRUE(result.validation.stats.budget_spent);
+  EXPECT_GE(result.validation.stats.cpu_s, kSpentFraction * kBudget_s);
 }
 
 TEST(PlanValidatedGrasps, UnderUncertaintyAcceptsDecidedHoldProbabilitiesRankedTheSameForAnyJobs) {
