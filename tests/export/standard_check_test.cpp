@@ -5,12 +5,15 @@
 #include <mujoco/mujoco.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "cordgrasp/core/hand_description.h"
 #include "cordgrasp/core/kinematics.h"
@@ -52,9 +55,10 @@ class StandardCheck : public ::testing::Test {
 };
 fs::path* StandardCheck::dir_ = nullptr;
 
-/// Runs cordgrasp-mujoco-check with `args`; returns its CSV rows' `held` column.
-std::vector<bool> mujoco_check_held(const std::string& scene, const std::string& args) {
-  const std::string csv = scene + ".csv";
+/// Runs cordgrasp-mujoco-check with `args` (its CSV to `csv`); returns the exit status and
+/// the output.
+std::pair<int, std::string> run_mujoco_check(const std::string& scene, const std::string& csv,
+                                             const std::string& args) {
   const std::string cmd = std::string("\"") + CORDGRASP_MUJOCO_CHECK_EXE + "\" --scene " +
                           scene + " --out " + csv + " " + args + " 2>&1";
   FILE* pipe = popen(cmd.c_str(), "r");
@@ -62,7 +66,14 @@ std::vector<bool> mujoco_check_held(const std::string& scene, const std::string&
   std::array<char, 4096> buf{};
   std::string output;
   for (size_t n; (n = fread(buf.data(), 1, buf.size(), pipe)) > 0;) output.append(buf.data(), n);
-  EXPECT_EQ(pclose(pipe), 0) << output;
+  return {pclose(pipe), output};
+}
+
+/// Runs cordgrasp-mujoco-check with `args`; returns its CSV rows' `held` column.
+std::vector<bool> mujoco_check_held(const std::string& scene, const std::string& args) {
+  const std::string csv = scene + ".csv";
+  const auto [status, output] = run_mujoco_check(scene, csv, args);
+  EXPECT_EQ(status, 0) << output;
   std::ifstream in(csv);
   std::string line;
   std::getline(in, line);
@@ -136,6 +147,62 @@ TEST_F(StandardCheck, MujocoHoldsPlannedGraspsAndLosesThemWithoutFriction) {
   const std::vector<bool> slippery = mujoco_check_held(scene, "--mu 0.01");
   ASSERT_EQ(slippery.size(), held.size());
   EXPECT_EQ(std::count(slippery.begin(), slippery.end(), true), 0);
+}
+
+/// A copy of the scene with `name`'s numeric element replaced by `element` ("" removes it).
+std::string scene_with(const fs::path& scene, const std::string& name, const std::string& element,
+                       const std::string& copy_name) {
+  std::ifstream in(scene);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string xml = text.str();
+  const size_t at = xml.find("<numeric name=\"" + name + "\"");
+  EXPECT_NE(at, std::string::npos) << name;
+  if (at != std::string::npos) xml.replace(at, xml.find("/>", at) + 2 - at, element);
+  // The copy lies beside the scene: its meshes folder is found by the same relative path.
+  const fs::path copy = scene.parent_path() / copy_name;
+  std::ofstream(copy) << xml;
+  return copy.string();
+}
+
+TEST_F(StandardCheck, RunsThePhysicsSettingsTheSceneCarries) {
+  const fs::path scene = *dir_ / "scene.xml";
+  // The scene carries the protocol export ran the closes with (standard's phases).
+  char error[1000] = "";
+  std::unique_ptr<mjModel, void (*)(mjModel*)> m(
+      mj_loadXML(scene.c_str(), nullptr, error, sizeof(error)), mj_deleteModel);
+  ASSERT_TRUE(m) << error;
+  const SimParams standard = sim_params_for(Protocol::kStandard);
+  const auto scene_value = [&](const std::string& field) {
+    const int id = mj_name2id(m.get(), mjOBJ_NUMERIC, MjcfNames::sim_numeric(field).c_str());
+    EXPECT_GE(id, 0) << field;
+    return id < 0 ? -1.0 : m->numeric_data[m->numeric_adr[id]];
+  };
+  constexpr double kWrittenRelTol = 1e-9;  // ten significant digits in the scene
+  EXPECT_NEAR(scene_value("shake_time_s"), standard.shake_time_s,
+              kWrittenRelTol * standard.shake_time_s);
+  EXPECT_NEAR(scene_value("rock_angle_rad"), standard.rock_angle_rad,
+              kWrittenRelTol * standard.rock_angle_rad);
+  EXPECT_NEAR(scene_value("held_translation_m"), standard.held_translation_m,
+              kWrittenRelTol * standard.held_translation_m);
+  // The check follows them: with a held limit of a micrometre nothing is held.
+  const std::vector<bool> held = mujoco_check_held(scene.string(), "");
+  ASSERT_FALSE(held.empty());
+  ASSERT_GE(std::count(held.begin(), held.end(), true), 1);
+  const std::string strict =
+      scene_with(scene, MjcfNames::sim_numeric("held_translation_m"),
+                 "<numeric name=\"" + MjcfNames::sim_numeric("held_translation_m") +
+                     "\" size=\"1\" data=\"1e-6\"/>",
+                 "strict.xml");
+  const std::vector<bool> strict_held = mujoco_check_held(strict, "");
+  ASSERT_EQ(strict_held.size(), held.size());
+  EXPECT_EQ(std::count(strict_held.begin(), strict_held.end(), true), 0);
+  // A scene without them (an older export) is refused, naming the one missing.
+  const std::string older =
+      scene_with(scene, MjcfNames::sim_numeric("lift_time_s"), "", "older.xml");
+  const auto [status, output] = run_mujoco_check(older, older + ".csv", "");
+  EXPECT_NE(status, 0);
+  EXPECT_NE(output.find("sim_lift_time_s"), std::string::npos) << output;
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "standard_check.h"
@@ -50,16 +51,24 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--damping-ratio", p.servo_damping_ratio, "Damping ratio of the servos")
       ->capture_default_str();
-  app.add_option("--lift-s", p.lift_time_s, "Duration of the rise [s]")->capture_default_str();
-  app.add_option("--lift-m", p.lift_height_m, "Height of the rise [m]")->capture_default_str();
-  app.add_option("--gravity", p.gravity_mps2, "Gravity in lift and shake [m/s^2]")
-      ->capture_default_str();
+  std::optional<double> lift_s, lift_m, gravity;
+  app.add_option("--lift-s", lift_s, "Duration of the rise [s]; default: the scene's");
+  app.add_option("--lift-m", lift_m, "Height of the rise [m]; default: the scene's");
+  app.add_option("--gravity", gravity, "Gravity in lift and shake [m/s^2]; default: the scene's");
   CLI11_PARSE(app, argc, argv);
   try {
     char error[1000] = "";
     std::unique_ptr<mjModel, void (*)(mjModel*)> m(
         mj_loadXML(scene.c_str(), nullptr, error, sizeof(error)), mj_deleteModel);
     if (!m) throw std::runtime_error("'" + scene + "': " + error);
+    try {
+      p = cordgrasp::mujoco_check::read_scene_protocol(m.get(), p);
+    } catch (const std::exception& e) {
+      throw std::runtime_error("'" + scene + "': " + e.what());
+    }
+    if (lift_s) p.lift_time_s = *lift_s;
+    if (lift_m) p.lift_height_m = *lift_m;
+    if (gravity) p.gravity_mps2 = *gravity;
     std::unique_ptr<mjData, void (*)(mjData*)> d(mj_makeData(m.get()), mj_deleteData);
     // Each grasp's run changes gains, limits and options: it gets a fresh copy of the scene.
     std::unique_ptr<mjModel, void (*)(mjModel*)> run_model(mj_copyModel(nullptr, m.get()),

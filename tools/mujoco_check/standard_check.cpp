@@ -25,13 +25,47 @@ const mjtNum* numeric(const mjModel* m, const std::string& name, int size) {
   const int id = mj_name2id(m, mjOBJ_NUMERIC, name.c_str());
   if (id < 0)
     throw std::runtime_error("scene has no custom numeric '" + name +
-                             "' (the bounded close): export it again with `cordgrasp export`");
+                             "' (the bounded close and its physics settings): export it again "
+                             "with this version's `cordgrasp export`");
   if (m->numeric_size[id] != size)
     throw std::runtime_error("custom numeric '" + name + "' has " +
                              std::to_string(m->numeric_size[id]) + " values, expected " +
                              std::to_string(size));
   return m->numeric_data + m->numeric_adr[id];
 }
+
+/// The fields read_scene_protocol() takes from the scene, by their SimParams name.
+struct SceneField {
+  const char* name;
+  double StandardCheckParams::*value;
+};
+using P = StandardCheckParams;
+constexpr SceneField kSceneFields[] = {
+    {"gravity_mps2", &P::gravity_mps2},
+    {"settle_time_s", &P::settle_time_s},
+    {"servo_gain_per_s", &P::servo_gain_per_s},
+    {"squeeze_max_time_s", &P::squeeze_max_time_s},
+    {"squeeze_min_time_s", &P::squeeze_min_time_s},
+    {"stall_speed", &P::stall_speed},
+    {"stall_time_s", &P::stall_time_s},
+    {"lift_height_m", &P::lift_height_m},
+    {"lift_time_s", &P::lift_time_s},
+    {"lift_hold_s", &P::lift_hold_s},
+    {"shake_amplitude_m", &P::shake_amplitude_m},
+    {"shake_frequency_hz", &P::shake_frequency_hz},
+    {"shake_time_s", &P::shake_time_s},
+    {"rock_angle_rad", &P::rock_angle_rad},
+    {"rock_frequency_hz", &P::rock_frequency_hz},
+    {"rock_time_s", &P::rock_time_s},
+    {"rest_exit_time_s", &P::rest_exit_time_s},
+    {"rest_drift_m", &P::rest_drift_m},
+    {"rest_drift_rad", &P::rest_drift_rad},
+    {"no_contact_exit_time_s", &P::no_contact_exit_time_s},
+    {"held_translation_m", &P::held_translation_m},
+    {"held_rotation_rad", &P::held_rotation_rad},
+    {"contact_distance_m", &P::contact_distance_m},
+    {"unstable_speed_mps", &P::unstable_speed_mps},
+};
 
 /// A base pose for the mocap target: position and rotation in the scene's world (object frame).
 struct Pose {
@@ -396,6 +430,12 @@ class StandardRun {
 };
 
 }  // namespace
+
+StandardCheckParams read_scene_protocol(const mjModel* m, StandardCheckParams p) {
+  for (const SceneField& f : kSceneFields)
+    p.*f.value = numeric(m, std::string("sim_") + f.name, 1)[0];  // MjcfNames::sim_numeric
+  return p;
+}
 
 StandardCheckResult run_standard_check(mjModel* m, mjData* d, int key,
                                        const StandardCheckParams& p) {

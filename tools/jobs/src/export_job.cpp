@@ -112,8 +112,8 @@ ExportOutcome export_job(const ExportJobParams& p) {
       mjcf.density_kgm3 = closes.front().object.mass_kg / parts_m3;
     else if (volume_m3 > 0.0 && parts_m3 > 0.0)
       mjcf.density_kgm3 *= volume_m3 / parts_m3;
-    out.files = write_mjcf_scene(p.out, hand, grasps, plan_contact_model(plan), solid_parts,
-                                 mjcf, closes);
+    out.files = write_mjcf_scene(p.out, hand, grasps, plan_contact_model(plan), solid_parts, mjcf,
+                                 closes, sim);
     return out;
   }
 

@@ -12,6 +12,7 @@
 #include "cordgrasp/core/atomic_file.h"
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/kinematics.h"
+#include "cordgrasp/jobs/sim_json.h"
 
 namespace cordgrasp {
 namespace {
@@ -193,12 +194,10 @@ std::string joined(const Eigen::VectorXd& v) {
 
 }  // namespace
 
-std::vector<std::string> write_mjcf_scene(const std::string& path, const HandModel& hand,
-                                          const std::vector<Grasp>& grasps,
-                                          const ContactModel& contact,
-                                          const std::vector<std::vector<Eigen::Vector3d>>& parts,
-                                          const MjcfParams& params,
-                                          const std::vector<BoundedClose>& closes) {
+std::vector<std::string> write_mjcf_scene(
+    const std::string& path, const HandModel& hand, const std::vector<Grasp>& grasps,
+    const ContactModel& contact, const std::vector<std::vector<Eigen::Vector3d>>& parts,
+    const MjcfParams& params, const std::vector<BoundedClose>& closes, const SimParams& sim) {
   if (!closes.empty() && closes.size() != grasps.size())
     throw std::invalid_argument("write_mjcf_scene: " + std::to_string(closes.size()) +
                                 " bounded closes for " + std::to_string(grasps.size()) +
@@ -334,6 +333,14 @@ std::vector<std::string> write_mjcf_scene(const std::string& path, const HandMod
       numeric(k, MjcfNames::kEffort, per_actuator(c.effort));
       numeric(k, MjcfNames::kHoldEffort, per_actuator(c.hold_effort));
       numeric(k, MjcfNames::kReachTime, Eigen::VectorXd::Constant(1, c.reach_time_s));
+    }
+    // The physics settings' numbers (top level; nested blocks, texts and unset ones skipped).
+    const nlohmann::json settings = sim_params_to_json(sim);
+    for (const auto& [field, value] : settings.items()) {
+      if (!value.is_number() && !value.is_boolean()) continue;
+      const double v = value.is_boolean() ? (value.get<bool>() ? 1.0 : 0.0) : value.get<double>();
+      x << "    <numeric name=\"" << MjcfNames::sim_numeric(field) << "\" size=\"1\" data=\""
+        << num(v) << "\"/>\n";
     }
     x << "  </custom>\n";
   }

@@ -46,12 +46,17 @@ struct MjcfNames {
   static constexpr const char* kEffort = "effort";      ///< servo effort limits
   static constexpr const char* kHoldEffort = "hold_effort";  ///< limits behind the plan
   static constexpr const char* kReachTime = "reach_s";  ///< duration of the reach [s]
+  /// Custom numeric of the physics setting `field` (a SimParams number) the closes were
+  /// made with: "sim_<field>", one value (booleans 0 / 1).
+  static std::string sim_numeric(const std::string& field) { return "sim_" + field; }
 };
 
 /// Writes the MJCF scene of `grasps` (world = object frame) to `path` and the hand's meshes
 /// as binary STL into "<stem>_meshes/" beside it; the object's convex parts (hull vertices,
 /// object frame) are inline. `closes` (one per grasp, or empty) adds each grasp's bounded close
-/// as `<custom><numeric>` elements. Returns the files written, `path` first.
+/// as `<custom><numeric>` elements, and with them every number of `sim`, the physics settings
+/// the closes were made with (the protocol's phases for cordgrasp-mujoco-check). Returns the
+/// files written, `path` first.
 /// @throws InputError when a file cannot be written; std::invalid_argument when `closes` is
 /// neither empty nor one per grasp.
 std::vector<std::string> write_mjcf_scene(const std::string& path, const HandModel& hand,
@@ -59,6 +64,7 @@ std::vector<std::string> write_mjcf_scene(const std::string& path, const HandMod
                                           const ContactModel& contact,
                                           const std::vector<std::vector<Eigen::Vector3d>>& parts,
                                           const MjcfParams& params = {},
-                                          const std::vector<BoundedClose>& closes = {});
+                                          const std::vector<BoundedClose>& closes = {},
+                                          const SimParams& sim = {});
 
 }  // namespace cordgrasp
