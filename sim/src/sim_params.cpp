@@ -111,7 +111,7 @@ struct ProtocolPreset {
 constexpr ProtocolPreset kPresets[] = {
     // protocol           step        iter settle lift m, s  hold shake m, Hz, s   rock °, Hz, s   all axes g6  reach gap  travel squeeze rest exit
     {Protocol::kQuick,    1.0 / 960.0, 50, 0.05, 0.10, 0.5,  0.3, 0.02,  2.0, 0.5,  15.0, 2.0, 0.5,  false, 0.5, 0.8, 0.0,  0.0,  0.5, 0.1, true},
-    {Protocol::kStandard, 1.0 / 960.0, 30, 0.01, 0.03, 0.27, 0.3, 0.005, 4.0, 0.25, 7.5,  4.0, 0.25, true,  0.5, 0.0, 3e-3, 1e-3, 0.3, 0.1, true},
+    {Protocol::kStandard, 1.0 / 960.0, 30, 0.01, 0.03, 0.27, 0.3, 0.005, 4.0, 0.25, 15.0, 2.0, 0.5,  true,  0.5, 0.0, 3e-3, 1e-3, 0.3, 0.1, true},
     {Protocol::kThorough, 1.0 / 960.0, 50, 0.05, 0.10, 1.0,  1.0, 0.02,  2.0, 1.0,  15.0, 1.0, 1.0,  false, 1.0, 0.0, 0.0,  0.0,  0.5, 0.0, false},
 };
 // clang-format on

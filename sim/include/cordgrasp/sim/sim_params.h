@@ -184,10 +184,10 @@ struct SimParams {
   double shake_frequency_hz = 4.0;    ///< (preset; at least 1 / shake_time_s is used: both
                                       ///< ways)
   double shake_time_s = 0.25;         ///< per axis (preset)
-  double rock_angle_rad = 7.5 * M_PI / 180.0;  ///< then ±angle about x_W, y_W, z_W (GCP; preset)
-  double rock_frequency_hz = 4.0;              ///< (preset; at least 1 / rock_time_s is used: tilts
-                                               ///< both ways)
-  double rock_time_s = 0.25;                   ///< per axis (preset)
+  double rock_angle_rad = 15.0 * M_PI / 180.0;  ///< then ±angle about x_W, y_W, z_W (GCP)
+  double rock_frequency_hz = 2.0;  ///< (preset; at least 1 / rock_time_s is used: tilts
+                                   ///< both ways)
+  double rock_time_s = 0.5;        ///< per axis (preset)
   /// Shake and rock along / about x_W, y_W and z_W at once: one segment of shake_time_s and
   /// one of rock_time_s, each axis's sine a third of a period after the last (a Lissajous
   /// path), instead of one segment per axis (preset).
