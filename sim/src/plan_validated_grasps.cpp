@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "cordgrasp/collision/bullet_hand_collider.h"
@@ -197,6 +198,18 @@ class CandidateSource {
   bool sampling_ = false;  ///< cord: every exploration spent, PlanParams::fallback_attempts
 };
 
+/// Counts a first trial that lost the object in phase `phase` (settle counts as close).
+void count_loss(ValidationStats& vs, const std::string& phase) {
+  if (phase == "lift")
+    ++vs.lost_in_lift;
+  else if (phase == "shake")
+    ++vs.lost_in_shake;
+  else if (phase == "gravity6")
+    ++vs.lost_in_gravity6;
+  else
+    ++vs.lost_in_close;
+}
+
 Outcome phase_outcome(const SimResult& r, const char* name) {
   const PhaseResult* p = r.phase(name);
   return p ? p->outcome : Outcome::kNotRun;
@@ -270,6 +283,7 @@ ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, Pla
     ++vs.simulated;
     const SimResult first = validate_grasp(mesh, hand, *g, sim, tests);
     ++vs.trials_run;
+    vs.object_mass_kg = first.object.mass_kg;
     if (first.rejected_in_close) {
       ++vs.rejected_early;
       vs.physics_s += seconds_since(physics_start);
@@ -284,6 +298,7 @@ ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, Pla
     if (v.require_held_as_planned && !first.held()) {
       vs.physics_s += seconds_since(physics_start);
       const PhaseResult* failed = first.failed_phase();
+      count_loss(vs, failed ? failed->name : std::string("close"));
       say("candidate " + std::to_string(candidate) + ": not held as planned (" +
           to_string(first.outcome) + (failed ? " in " + failed->name : std::string()) + ")");
       continue;
@@ -303,6 +318,7 @@ ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, Pla
         break;
       }
       if (h.verdict != HoldVerdict::kAbove) {
+        ++vs.lost_in_later_trials;
         say("candidate " + std::to_string(candidate) + ": " + hold_probability_line(h));
         continue;
       }
@@ -325,7 +341,10 @@ ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, Pla
           (accepted ? ", accepted (" + std::to_string(accepted_grasps.size() + 1) + " / " +
                           std::to_string(wanted) + ")"
                     : std::string()));
-      if (!accepted) continue;
+      if (!accepted) {
+        ++vs.lost_in_later_trials;
+        continue;
+      }
       gv.held_trials = c.held;
       gv.trials = static_cast<int>(c.draws.size());
     } else {
@@ -364,7 +383,10 @@ ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, Pla
           (accepted ? ", accepted (" + std::to_string(accepted_grasps.size() + 1) + " / " +
                           std::to_string(wanted) + ")"
                     : std::string()));
-      if (!accepted) continue;
+      if (!accepted) {
+        ++vs.lost_in_later_trials;
+        continue;
+      }
       gv.held_trials = held;
       gv.trials = static_cast<int>(outcomes.size());
     }

@@ -143,7 +143,7 @@ TEST(CliPlan, RejectsAnUnknownQualityModeNamingTheFileAndKey) {
 TEST(CliPlan, ValidatedPlanningThatAcceptsNothingSaysNoneHeldNotNoForceClosure) {
   test::TempDir dir;
   const std::string heavy = dir.write("heavy.json", "{\"mass_kg\": 50}\n");
-  const std::string few = dir.write("few.yaml", "max_attempts: 40\n");
+  const std::string few = dir.write("few.yaml", "max_attempts: 40\nvalidation: {budget_s: 3}\n");
   const auto r = test::run_cordgrasp(
       "plan --hand parallel_gripper --object box --validate --physics " + test::quoted(heavy) +
       " --settings " + test::quoted(few) + " --out " + test::quoted(dir.file("p.json")));
@@ -151,7 +151,10 @@ TEST(CliPlan, ValidatedPlanningThatAcceptsNothingSaysNoneHeldNotNoForceClosure) 
   EXPECT_NE(r.output.find("no grasp of box with parallel_gripper accepted in physics"),
             std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("no force-closure grasp"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find(" simulated, "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(" rejected early; lost as planned in close "), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("lost the object (50.000 kg) in lift or shake"), std::string::npos)
+      << r.output;
   EXPECT_TRUE(std::filesystem::exists(dir.file("p.json")));
 }
 

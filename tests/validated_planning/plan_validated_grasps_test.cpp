@@ -68,7 +68,9 @@ TEST(PlanValidatedGrasps, AcceptedGraspsHoldWhenTheWrittenPlanIsValidatedAgain) 
   ASSERT_TRUE(plan.validation.has_value());
   const ValidationStats& s = plan.validation->stats;
   EXPECT_EQ(s.accepted, 2);
-  EXPECT_GE(s.simulated, s.accepted + s.rejected_early);
+  // Every simulated candidate is accepted or counted where it was lost.
+  EXPECT_EQ(s.simulated, s.accepted + s.rejected_early + s.lost_in_close + s.lost_in_lift +
+                             s.lost_in_shake + s.lost_in_gravity6 + s.lost_in_later_trials);
   EXPECT_GE(s.force_closure, s.simulated + s.similar);
   ASSERT_TRUE(s.first_accepted_s.has_value());
   // Held in ≥ K trials, the first (the grasp as planned, which plan.json stores) among them.
@@ -354,7 +356,17 @@ TEST(PlanValidatedGrasps, ValidationRecordRoundTripsThroughPlanJsonAndIsReadStri
   EXPECT_EQ(back.validation->grasps[0].held_trials, plan.validation->grasps[0].held_trials);
   EXPECT_EQ(back.validation->grasps[0].lift, plan.validation->grasps[0].lift);
   EXPECT_EQ(back.validation->stats.accepted, plan.validation->stats.accepted);
+  EXPECT_EQ(back.validation->stats.lost_in_lift, plan.validation->stats.lost_in_lift);
+  EXPECT_DOUBLE_EQ(back.validation->stats.object_mass_kg, plan.validation->stats.object_mass_kg);
   EXPECT_EQ(back.params.diversity.min_hand_turn_deg, box.job.plan.diversity.min_hand_turn_deg);
+
+  // A plan written before the loss counts existed reads them as 0; an unknown count is refused.
+  nlohmann::json older = j;
+  older["validation"]["stats"].erase("lost_in_lift");
+  EXPECT_EQ(plan_from_json(older, box.hand, "plan.json").validation->stats.lost_in_lift, 0);
+  nlohmann::json unknown_count = j;
+  unknown_count["validation"]["stats"]["lost_in_space"] = 1;
+  EXPECT_THROW(plan_from_json(unknown_count, box.hand, "plan.json"), InputError);
 
   nlohmann::json unknown = j;
   unknown["grasps"][0]["validation"]["held"] = 1;
@@ -444,6 +456,41 @@ TEST(PlanValidatedGrasps, ItsPhysicsSettingsFileIsRecordedAndUsedAgainByValidate
     EXPECT_NE(std::string(e.what()).find("physics.yaml': solver_iterations"), std::string::npos)
         << e.what();
   }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(PlanValidatedGrasps, SaysWhereCandidatesLostAnObjectTooHeavyForTheHand) {
+  constexpr double kHeavy_kg = 20.0;  // far beyond the gripper's grip
+  constexpr double kBudget_s = 2.0;   // CPU: a handful of candidates
+  const std::string dir = temp_dir("heavy");
+  const std::string file = dir + "/physics.yaml";
+  std::ofstream(file) << "mass_kg: " << kHeavy_kg << "\n";
+  BoxPlan box(1);
+  box.v.physics_file = file;
+  box.v.budget_s = kBudget_s;
+  const PlanDocument plan = box.plan();
+  ASSERT_TRUE(plan.validation.has_value());
+  const ValidationStats& s = plan.validation->stats;
+  EXPECT_EQ(s.accepted, 0);
+  ASSERT_GT(s.simulated, 0);
+  EXPECT_DOUBLE_EQ(s.object_mass_kg, kHeavy_kg);
+  EXPECT_EQ(s.simulated, s.rejected_early + s.lost_in_close + s.lost_in_lift + s.lost_in_shake +
+                             s.lost_in_gravity6 + s.lost_in_later_trials);
+  EXPECT_GT(2 * (s.lost_in_lift + s.lost_in_shake), s.simulated);
+  const std::string message = no_accepted_grasp_message("plan", plan, box.mesh);
+  EXPECT_NE(message.find("lost the object (20.000 kg) in lift or shake"), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("lost as planned in close " + std::to_string(s.lost_in_close) + ", lift " +
+                         std::to_string(s.lost_in_lift)),
+            std::string::npos)
+      << message;
+  // Candidates lost while closing say nothing of the weight.
+  PlanDocument closing = plan;
+  ValidationStats& c = closing.validation->stats;
+  c.lost_in_close += c.lost_in_lift + c.lost_in_shake;
+  c.lost_in_lift = c.lost_in_shake = 0;
+  EXPECT_EQ(no_accepted_grasp_message("plan", closing, box.mesh).find("lost the object"),
+            std::string::npos);
   std::filesystem::remove_all(dir);
 }
 

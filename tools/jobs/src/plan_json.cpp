@@ -386,8 +386,12 @@ PlanDocument plan_from_json(const nlohmann::json& j, const HandModel& hand,
       PlanValidation record;
       params_from_json(v.contains("parameters") ? v.at("parameters") : nlohmann::json(),
                        source, "validation.parameters", &record.params);
-      params_from_json(v.contains("stats") ? v.at("stats") : nlohmann::json(), source,
-                       "validation.stats", &record.stats);
+      {  // counts added in later versions keep their defaults in older plans
+        const nlohmann::json stats_json = v.contains("stats") ? v.at("stats") : nlohmann::json();
+        JsonReadArchive stats(stats_json, source, "validation.stats", MissingKey::kKeepDefault);
+        record.stats.Serialize(&stats);
+        stats.reject_unknown_keys();
+      }
       for (const auto& item : v.items())
         if (item.key() != "parameters" && item.key() != "stats")
           throw InputError(source + ": validation: unknown key '" + item.key() + "'");

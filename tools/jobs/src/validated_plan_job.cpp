@@ -29,13 +29,34 @@ PlanDocument validated_plan_job(const PlanJobParams& job, const ValidationParams
   return doc;
 }
 
+namespace {
+
+/// "2 rejected early; lost as planned in close 1, lift 5, shake 1; 2 in later trials": where the
+/// simulated candidates that were not accepted failed.
+std::string losses_text(const ValidationStats& s) {
+  std::string text = std::to_string(s.rejected_early) + " rejected early";
+  std::string phases;
+  const auto add = [&](const char* phase, int n, bool always) {
+    if (n == 0 && !always) return;
+    phases += (phases.empty() ? "" : ", ") + std::string(phase) + " " + std::to_string(n);
+  };
+  add("close", s.lost_in_close, true);
+  add("lift", s.lost_in_lift, true);
+  add("shake", s.lost_in_shake, true);
+  add("gravity6", s.lost_in_gravity6, false);
+  text += "; lost as planned in " + phases;
+  text += "; " + std::to_string(s.lost_in_later_trials) + " in later trials";
+  return text;
+}
+
+}  // namespace
+
 std::string validation_stats_line(const ValidationStats& s, int wanted) {
   std::string line = "accepted " + std::to_string(s.accepted) + " / " + std::to_string(wanted) +
                      " (" + std::to_string(s.force_closure) + " force-closure candidates of " +
                      std::to_string(s.attempts) + " attempts: " + std::to_string(s.similar) +
-                     " near copies, " + std::to_string(s.simulated) + " simulated, " +
-                     std::to_string(s.rejected_early) + " rejected early, " +
-                     std::to_string(s.trials_run) + " trials; ";
+                     " near copies, " + std::to_string(s.simulated) + " simulated (" +
+                     losses_text(s) + "), " + std::to_string(s.trials_run) + " trials; ";
   if (s.first_accepted_cpu_s)
     line += "first accepted after " + fixed(*s.first_accepted_cpu_s, 1) + " s CPU, ";
   line += fixed(s.cpu_s, 1) + " s CPU in all" + (s.budget_spent ? ", budget spent)" : ")");
@@ -47,12 +68,17 @@ std::string no_accepted_grasp_message(const std::string& who, const PlanDocument
   if (!doc.validation || doc.validation->stats.force_closure == 0)
     return no_grasp_message(who, doc, mesh);
   const ValidationStats& s = doc.validation->stats;
+  // Most candidates dropped by gravity: the grip, not the planner, is short.
+  const bool weak_grip = 2 * (s.lost_in_lift + s.lost_in_shake) > s.simulated;
   return who + ": no grasp of " + doc.object_name + " with " + doc.hand_name +
-         " accepted in physics (" + validation_stats_line(s, doc.params.grasps) + "); try " +
-         (s.budget_spent ? "a larger validation.budget_s (--settings), " : "") +
+         " accepted in physics (" + validation_stats_line(s, doc.params.grasps) + ")" +
+         (weak_grip ? "; most candidates lost the object (" + fixed(s.object_mass_kg, 3) +
+                          " kg) in lift or shake: the hand's joint effort limits may be too low "
+                          "for its weight (mass_kg in the physics settings sets the mass)"
+                    : std::string()) +
+         "; try " + (s.budget_spent ? "a larger validation.budget_s (--settings), " : "") +
          "another --seed or --planner" +
-         (is_none(doc.validation->params.uncertainty) ? ""
-                                                       : " or a lower --min-hold-probability");
+         (is_none(doc.validation->params.uncertainty) ? "" : " or a lower --min-hold-probability");
 }
 
 }  // namespace cordgrasp

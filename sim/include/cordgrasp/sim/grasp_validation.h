@@ -97,6 +97,14 @@ struct ValidationStats {
   int simulated = 0;         ///< candidates given to physics
   int rejected_early = 0;    ///< of those, dropped by the squeeze shift before lift
   int held_as_planned = 0;   ///< of those, held in the first trial (the grasp as planned)
+  /// Of those simulated, not held in the first trial (other than rejected early), by the phase
+  /// that lost the object (settle counts as close).
+  int lost_in_close = 0;
+  int lost_in_lift = 0;
+  int lost_in_shake = 0;
+  int lost_in_gravity6 = 0;
+  int lost_in_later_trials = 0;  ///< went on to the later trials and was not accepted
+  double object_mass_kg = 0.0;   ///< object mass as simulated (0: nothing simulated) [kg]
   int trials_run = 0;        ///< physics trials run in all
   int accepted = 0;          ///< candidates held in ≥ min_held trials
   std::optional<double> first_accepted_s;  ///< time to the first accepted grasp
@@ -110,14 +118,15 @@ struct ValidationStats {
   /// Visits every field in declaration order (core/serialize.h).
   template <typename Archive>
   void Serialize(Archive* a) {
-    visit_fields(a, CORDGRASP_NVP(attempts), CORDGRASP_NVP(force_closure),
-                 CORDGRASP_NVP(similar), CORDGRASP_NVP(simulated),
-                 CORDGRASP_NVP(rejected_early), CORDGRASP_NVP(held_as_planned),
-                 CORDGRASP_NVP(trials_run),
-                 CORDGRASP_NVP(accepted), CORDGRASP_NVP(first_accepted_s),
-                 CORDGRASP_NVP(planning_s), CORDGRASP_NVP(physics_s), CORDGRASP_NVP(total_s),
-                 CORDGRASP_NVP(first_accepted_cpu_s), CORDGRASP_NVP(cpu_s),
-                 CORDGRASP_NVP(budget_spent));
+    visit_fields(
+        a, CORDGRASP_NVP(attempts), CORDGRASP_NVP(force_closure), CORDGRASP_NVP(similar),
+        CORDGRASP_NVP(simulated), CORDGRASP_NVP(rejected_early), CORDGRASP_NVP(held_as_planned),
+        CORDGRASP_NVP(lost_in_close), CORDGRASP_NVP(lost_in_lift), CORDGRASP_NVP(lost_in_shake),
+        CORDGRASP_NVP(lost_in_gravity6), CORDGRASP_NVP(lost_in_later_trials),
+        CORDGRASP_NVP(object_mass_kg), CORDGRASP_NVP(trials_run), CORDGRASP_NVP(accepted),
+        CORDGRASP_NVP(first_accepted_s), CORDGRASP_NVP(planning_s), CORDGRASP_NVP(physics_s),
+        CORDGRASP_NVP(total_s), CORDGRASP_NVP(first_accepted_cpu_s), CORDGRASP_NVP(cpu_s),
+        CORDGRASP_NVP(budget_spent));
   }
 };
 
