@@ -11,6 +11,7 @@
 
 #include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/sim/motion_profiles.h"
+#include "cordgrasp/sim/turn_keeps_surface.h"
 #include "cordgrasp/sim/validate_grasp.h"
 #include "hand_multibody.h"
 #include "object_body.h"
@@ -66,6 +67,7 @@ struct GraspSimulation::Impl {
   std::unique_ptr<btMultiBodyDynamicsWorld> world;
   std::unique_ptr<bullet::HandMultiBody> hand_body;
   std::unique_ptr<bullet::ObjectBody> object;
+  const ObjectSurface* surface = nullptr;  ///< for turned_past_limit()
 
   Eigen::Isometry3d X_WO0 = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d X_WB_cmd = Eigen::Isometry3d::Identity();  ///< commanded root pose
@@ -132,7 +134,13 @@ struct GraspSimulation::Impl {
   /// far relative to X_BO_ref? Otherwise names the segment in r.detail.
   bool segment_holds(PhaseResult& r, const std::string& segment, bool ran) const;
   std::chrono::steady_clock::time_point phase_start;
-  Outcome classify(const PhaseResult& r) const;
+  /// Held, slipped, dropped or unstable from the phase's measures; `turned_past` as
+  /// turned_past_limit() for its rotation.
+  Outcome classify(const PhaseResult& r, bool turned_past) const;
+  /// Whether the object, turned by `turned` from X_BO_reference, is past the held turn:
+  /// turned ≥ held_rotation_rad, unless that turn maps its surface onto itself within
+  /// contact_distance_m (a body of revolution spinning about its axis).
+  bool turned_past_limit(const Eigen::Isometry3d& X_BO_reference, double turned) const;
   /// Runs `duration` seconds along a root trajectory X_WB(t) (t from 0); returns false when the
   /// phase must stop (blown up, the object drop_distance_m off, or failed:
   /// SimParams::exit_on_failure). With `rest_exit`, returns true early once the object has been
@@ -217,6 +225,7 @@ GraspSimulation::Impl::Impl(const Mesh& mesh, const HandModel& h, const Grasp& g
 
   // Object.
   object = bullet::make_object_body(mesh, params);
+  surface = &object_surface(mesh);
   const Eigen::Isometry3d X_OB = grasp.X_OB;
   if (params.world_frame == WorldFrame::kApproachDown) {
     // GCP frame G: +z_G down, x_G = x_W (R_WG = diag(1, −1, −1)), GCP at the world origin.
@@ -489,17 +498,24 @@ bool GraspSimulation::Impl::segment_holds(PhaseResult& r, const std::string& seg
     contacts(probe.contact_count, penetration);
     probe.in_contact = probe.contact_count > 0;
   }
-  if (ran && classify(probe) == Outcome::kHeld) return true;
+  if (ran && classify(probe, turned_past_limit(X_BO_ref, probe.rotation_rad)) == Outcome::kHeld)
+    return true;
   r.detail = segment;
   return false;
 }
 
-Outcome GraspSimulation::Impl::classify(const PhaseResult& r) const {
+Outcome GraspSimulation::Impl::classify(const PhaseResult& r, bool turned_past) const {
   if (blew_up) return Outcome::kUnstable;
   if (!r.in_contact) return Outcome::kDropped;
-  if (r.translation_m < params.held_translation_m && r.rotation_rad < params.held_rotation_rad)
-    return Outcome::kHeld;
+  if (r.translation_m < params.held_translation_m && !turned_past) return Outcome::kHeld;
   return Outcome::kSlipped;
+}
+
+bool GraspSimulation::Impl::turned_past_limit(const Eigen::Isometry3d& X_BO_reference,
+                                              double turned) const {
+  if (turned < params.held_rotation_rad) return false;
+  const Eigen::Matrix3d R_O = X_BO_reference.linear().transpose() * X_BO().linear();
+  return !turn_keeps_surface(*surface, R_O, params.contact_distance_m);
 }
 
 void GraspSimulation::Impl::finish(PhaseResult& r, const Eigen::Isometry3d& X_BO_reference) {
@@ -511,7 +527,7 @@ void GraspSimulation::Impl::finish(PhaseResult& r, const Eigen::Isometry3d& X_BO
     contacts(r.contact_count, penetration);
     r.in_contact = r.contact_count > 0;
   }
-  r.outcome = classify(r);
+  r.outcome = classify(r, !blew_up && turned_past_limit(X_BO_reference, r.rotation_rad));
   r.joint_efforts.assign(hand.joints.size(), 0.0);
   for (size_t k = 0; k < hand_body->motors.size(); ++k)
     r.joint_efforts[static_cast<size_t>(hand_body->motor_joint[k])] =
@@ -544,8 +560,7 @@ bool GraspSimulation::Impl::run(double duration, const Trajectory& trajectory, b
       current->max_translation_m = std::max(current->max_translation_m, moved);
       if (moved > params.drop_distance_m) return false;
       if (exit_on_failure) {
-        if (moved >= params.held_translation_m || turned >= params.held_rotation_rad)
-          return false;
+        if (moved >= params.held_translation_m || turned_past_limit(X_BO_ref, turned)) return false;
         without_contact = last_contact_count > 0 ? 0 : without_contact + 1;
         if (without_contact >= no_contact_steps) return false;
       }
@@ -706,7 +721,7 @@ PhaseResult GraspSimulation::close() {
   const auto moved_off_plan = [&] {
     double turned = 0.0;
     const double moved = s.pose_change(X_BO_plan, &turned);
-    off_plan = moved >= s.params.held_translation_m || turned >= s.params.held_rotation_rad;
+    off_plan = moved >= s.params.held_translation_m || s.turned_past_limit(X_BO_plan, turned);
     return off_plan;
   };
   const int reach_steps = static_cast<int>(std::ceil(reach_s / s.dt));
