@@ -225,7 +225,7 @@ GraspSimulation::Impl::Impl(const Mesh& mesh, const HandModel& h, const Grasp& g
 
   // Object.
   object = bullet::make_object_body(mesh, params);
-  surface = &object_surface(mesh);
+  surface = &object_surface(mesh, object->mesh_key);
   const Eigen::Isometry3d X_OB = grasp.X_OB;
   if (params.world_frame == WorldFrame::kApproachDown) {
     // GCP frame G: +z_G down, x_G = x_W (R_WG = diag(1, −1, −1)), GCP at the world origin.

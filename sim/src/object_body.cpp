@@ -137,6 +137,19 @@ UnitSolid convex_hull_solid(const std::vector<Eigen::Vector3d>& points) {
   return unit_solid(vertices, triangles);
 }
 
+std::vector<int> area_triangle_indices(const Mesh& mesh) {
+  std::vector<int> indices;
+  for (const Eigen::Vector3i& t : mesh.triangles) {
+    const Eigen::Vector3d& a = mesh.vertices[static_cast<size_t>(t[0])];
+    if ((mesh.vertices[static_cast<size_t>(t[1])] - a)
+            .cross(mesh.vertices[static_cast<size_t>(t[2])] - a)
+            .squaredNorm() <= 0.0)
+      continue;
+    indices.insert(indices.end(), {t[0], t[1], t[2]});
+  }
+  return indices;
+}
+
 std::unique_ptr<ObjectBody> make_object_body(const Mesh& mesh, const SimParams& params) {
   if (mesh.triangles.empty())
     throw std::invalid_argument("make_object_body: mesh '" + mesh.name + "' has no triangles");
@@ -145,7 +158,7 @@ std::unique_ptr<ObjectBody> make_object_body(const Mesh& mesh, const SimParams& 
 
   // Mass basis (docs/physics.md §2): the closed volume; for an open mesh a shell of
   // open_mesh_shell_m over its surface, at most the convex hull's volume.
-  const std::string mesh_key = mesh_hash(mesh);
+  const std::string& mesh_key = out->mesh_key = mesh_hash(mesh);
   const bool large = mesh.triangles.size() > kLargeMeshTriangles;
   const MeshVolumes& volumes = once_per_key<MeshVolumes>(mesh_key, [&]() {
     MeshVolumes v;
@@ -247,14 +260,7 @@ std::unique_ptr<ObjectBody> make_object_body(const Mesh& mesh, const SimParams& 
       const Eigen::Vector3d p = X_CO * v;
       out->vertices.insert(out->vertices.end(), {p.x(), p.y(), p.z()});
     }
-    for (const Eigen::Vector3i& t : mesh.triangles) {
-      const Eigen::Vector3d& a = mesh.vertices[static_cast<size_t>(t[0])];
-      if ((mesh.vertices[static_cast<size_t>(t[1])] - a)
-              .cross(mesh.vertices[static_cast<size_t>(t[2])] - a)
-              .squaredNorm() <= 0.0)
-        continue;
-      out->indices.insert(out->indices.end(), {t[0], t[1], t[2]});
-    }
+    out->indices = area_triangle_indices(mesh);
     out->mesh_interface = std::make_unique<btTriangleIndexVertexArray>(
         static_cast<int>(out->indices.size() / 3), out->indices.data(), 3 * sizeof(int),
         static_cast<int>(mesh.vertices.size()), out->vertices.data(), 3 * sizeof(btScalar));

@@ -7,6 +7,7 @@
 #include <btBulletCollisionCommon.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "cordgrasp/core/mesh.h"
@@ -17,6 +18,7 @@ namespace cordgrasp::bullet {
 
 struct ObjectBody {
   SimObjectInfo info;
+  std::string mesh_key;  ///< mesh_hash of the mesh it was built from
   Eigen::Isometry3d X_OC = Eigen::Isometry3d::Identity();  ///< body frame in object frame
   std::vector<std::unique_ptr<btConvexHullShape>> hulls;   ///< parts, points in C
   std::unique_ptr<btCompoundShape> compound;               ///< several parts
@@ -41,6 +43,10 @@ UnitSolid unit_solid(const std::vector<Eigen::Vector3d>& vertices,
 
 /// The solid convex hull of points (btConvexHullComputer); empty for flat input.
 UnitSolid convex_hull_solid(const std::vector<Eigen::Vector3d>& points);
+
+/// Flat index list (3 per triangle) of the mesh's triangles of non-zero area: Bullet's
+/// triangle shapes want no degenerate ones.
+std::vector<int> area_triangle_indices(const Mesh& mesh);
 
 /// Builds the object body at the identity pose. @throws std::invalid_argument for a mesh
 /// without usable triangles.

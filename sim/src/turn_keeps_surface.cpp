@@ -15,6 +15,7 @@
 
 #include "cordgrasp/core/mesh_properties.h"
 #include "cordgrasp/sim/convex_decomposition.h"
+#include "object_body.h"
 
 namespace cordgrasp {
 
@@ -49,18 +50,9 @@ constexpr size_t kProbePoints = 128;
 
 std::unique_ptr<ObjectSurface> build_surface(const Mesh& mesh) {
   auto s = std::make_unique<ObjectSurface>();
+  s->indices = bullet::area_triangle_indices(mesh);
   std::vector<bool> used(mesh.vertices.size(), false);
-  for (const Eigen::Vector3i& t : mesh.triangles) {
-    const Eigen::Vector3d& a = mesh.vertices[static_cast<size_t>(t[0])];
-    if ((mesh.vertices[static_cast<size_t>(t[1])] - a)
-            .cross(mesh.vertices[static_cast<size_t>(t[2])] - a)
-            .squaredNorm() <= 0.0)
-      continue;  // Bullet's tree wants triangles with an area
-    for (int k = 0; k < 3; ++k) {
-      s->indices.push_back(t[k]);
-      used[static_cast<size_t>(t[k])] = true;
-    }
-  }
+  for (const int i : s->indices) used[static_cast<size_t>(i)] = true;
   if (s->indices.empty())
     throw std::invalid_argument("object_surface: mesh '" + mesh.name +
                                 "' has no triangle with an area");
@@ -80,6 +72,10 @@ std::unique_ptr<ObjectSurface> build_surface(const Mesh& mesh) {
 }  // namespace
 
 const ObjectSurface& object_surface(const Mesh& mesh) {
+  return object_surface(mesh, mesh_hash(mesh));
+}
+
+const ObjectSurface& object_surface(const Mesh& mesh, const std::string& mesh_key) {
   // Once per mesh content and process; concurrent callers of one mesh wait for the first.
   struct Entry {
     std::once_flag once;
@@ -89,9 +85,8 @@ const ObjectSurface& object_surface(const Mesh& mesh) {
   static std::map<std::string, std::unique_ptr<Entry>> entries;
   Entry* entry = nullptr;
   {
-    const std::string key = mesh_hash(mesh);
     const std::lock_guard<std::mutex> lock(mutex);
-    std::unique_ptr<Entry>& slot = entries[key];
+    std::unique_ptr<Entry>& slot = entries[mesh_key];
     if (!slot) slot = std::make_unique<Entry>();
     entry = slot.get();
   }

@@ -70,6 +70,17 @@ std::pair<int, std::string> run_mujoco_check(const std::string& scene, const std
 }
 
 /// Runs cordgrasp-mujoco-check with `args`; returns its CSV rows' `held` column.
+using ModelPtr = std::unique_ptr<mjModel, void (*)(mjModel*)>;
+
+/// The scene as MuJoCo loads it; null (with MuJoCo's message added as a test failure) when it
+/// does not load.
+ModelPtr load_model(const fs::path& scene) {
+  char error[1000] = "";
+  ModelPtr m(mj_loadXML(scene.c_str(), nullptr, error, sizeof(error)), mj_deleteModel);
+  EXPECT_TRUE(m) << scene << ": " << error;
+  return m;
+}
+
 std::vector<bool> mujoco_check_held(const std::string& scene, const std::string& args) {
   const std::string csv = scene + ".csv";
   const auto [status, output] = run_mujoco_check(scene, csv, args);
@@ -85,10 +96,8 @@ std::vector<bool> mujoco_check_held(const std::string& scene, const std::string&
 
 TEST_F(StandardCheck, StartLiesGapShortOfThePlanAndTheSqueezeOneTravelPast) {
   const fs::path xml = *dir_ / "scene.xml";
-  char error[1000] = "";
-  std::unique_ptr<mjModel, void (*)(mjModel*)> m(
-      mj_loadXML(xml.c_str(), nullptr, error, sizeof(error)), mj_deleteModel);
-  ASSERT_TRUE(m) << error;
+  const ModelPtr m = load_model(xml);
+  ASSERT_TRUE(m);
   std::unique_ptr<mjData, void (*)(mjData*)> d(mj_makeData(m.get()), mj_deleteData);
   const nlohmann::json json = read_plan_json((*dir_ / "plan.json").string());
   const HandModel hand = load_hand(plan_hand_path(json));
@@ -168,10 +177,8 @@ std::string scene_with(const fs::path& scene, const std::string& name, const std
 TEST_F(StandardCheck, RunsThePhysicsSettingsTheSceneCarries) {
   const fs::path scene = *dir_ / "scene.xml";
   // The scene carries the protocol export ran the closes with (standard's phases).
-  char error[1000] = "";
-  std::unique_ptr<mjModel, void (*)(mjModel*)> m(
-      mj_loadXML(scene.c_str(), nullptr, error, sizeof(error)), mj_deleteModel);
-  ASSERT_TRUE(m) << error;
+  const ModelPtr m = load_model(scene);
+  ASSERT_TRUE(m);
   const SimParams standard = sim_params_for(Protocol::kStandard);
   const auto scene_value = [&](const std::string& field) {
     const int id = mj_name2id(m.get(), mjOBJ_NUMERIC, MjcfNames::sim_numeric(field).c_str());

@@ -3,6 +3,7 @@
 // a body of revolution spinning about its axis, a sphere about any axis, a box by a quarter
 // turn. The close and the tests judge such a turn by the object's centre of mass only.
 #include <Eigen/Core>
+#include <string>
 
 #include "cordgrasp/core/mesh.h"
 
@@ -15,6 +16,8 @@ struct ObjectSurface;
 /// The surface of `mesh`, built on the first call per mesh content and kept for the process.
 /// @throws std::invalid_argument for a mesh without a triangle of non-zero area.
 const ObjectSurface& object_surface(const Mesh& mesh);
+/// The same, for a caller that has the mesh's mesh_hash (convex_decomposition.h) already.
+const ObjectSurface& object_surface(const Mesh& mesh, const std::string& mesh_key);
 
 /// True when turning the object by R_O (object frame) about its surface's centroid leaves each
 /// of the surface's vertices within tolerance_m of the unturned surface. The centroid, not the
