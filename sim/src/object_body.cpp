@@ -24,28 +24,6 @@ constexpr double kMinInertiaRatio = 1e-3;
 /// More parts than this get a dynamic AABB tree in the compound.
 constexpr int kCompoundTreeParts = 8;
 
-/// Returns compute()'s value for `key`, computing it once per key and process (concurrent
-/// callers of one key wait for the first). A validate of N grasps or trials builds N bodies of
-/// one object: what depends on the mesh alone (hulls of millions of vertices) is derived once.
-template <typename T, typename F>
-const T& once_per_key(const std::string& key, F&& compute) {
-  struct Entry {
-    std::once_flag once;
-    T value;
-  };
-  static std::mutex mutex;
-  static std::map<std::string, std::unique_ptr<Entry>> entries;
-  Entry* entry = nullptr;
-  {
-    const std::lock_guard<std::mutex> lock(mutex);
-    std::unique_ptr<Entry>& slot = entries[key];
-    if (!slot) slot = std::make_unique<Entry>();
-    entry = slot.get();
-  }
-  std::call_once(entry->once, [&]() { entry->value = compute(); });
-  return entry->value;
-}
-
 /// Above this many triangles (raw scans) the convex hull is that of the vertices' column
 /// extremes (column_extreme_points) and the convex-hull shape is reduced from its vertices;
 /// below it (every shipped and dataset mesh) both are those of every vertex.

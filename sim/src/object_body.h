@@ -6,7 +6,9 @@
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 #include <btBulletCollisionCommon.h>
 
+#include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -43,6 +45,28 @@ UnitSolid unit_solid(const std::vector<Eigen::Vector3d>& vertices,
 
 /// The solid convex hull of points (btConvexHullComputer); empty for flat input.
 UnitSolid convex_hull_solid(const std::vector<Eigen::Vector3d>& points);
+
+/// Returns compute()'s value for `key`, computing it once per key and process (concurrent
+/// callers of one key wait for the first). A validate of N grasps or trials builds N bodies of
+/// one object: what depends on the mesh alone (hulls of millions of vertices) is derived once.
+template <typename T, typename F>
+const T& once_per_key(const std::string& key, F&& compute) {
+  struct Entry {
+    std::once_flag once;
+    T value;
+  };
+  static std::mutex mutex;
+  static std::map<std::string, std::unique_ptr<Entry>> entries;
+  Entry* entry = nullptr;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    std::unique_ptr<Entry>& slot = entries[key];
+    if (!slot) slot = std::make_unique<Entry>();
+    entry = slot.get();
+  }
+  std::call_once(entry->once, [&]() { entry->value = compute(); });
+  return entry->value;
+}
 
 /// Flat index list (3 per triangle) of the mesh's triangles of non-zero area: Bullet's
 /// triangle shapes want no degenerate ones.

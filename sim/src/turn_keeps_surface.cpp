@@ -6,9 +6,7 @@
 #include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 
 #include <algorithm>
-#include <map>
 #include <memory>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -76,22 +74,8 @@ const ObjectSurface& object_surface(const Mesh& mesh) {
 }
 
 const ObjectSurface& object_surface(const Mesh& mesh, const std::string& mesh_key) {
-  // Once per mesh content and process; concurrent callers of one mesh wait for the first.
-  struct Entry {
-    std::once_flag once;
-    std::unique_ptr<ObjectSurface> surface;
-  };
-  static std::mutex mutex;
-  static std::map<std::string, std::unique_ptr<Entry>> entries;
-  Entry* entry = nullptr;
-  {
-    const std::lock_guard<std::mutex> lock(mutex);
-    std::unique_ptr<Entry>& slot = entries[mesh_key];
-    if (!slot) slot = std::make_unique<Entry>();
-    entry = slot.get();
-  }
-  std::call_once(entry->once, [&]() { entry->surface = build_surface(mesh); });
-  return *entry->surface;
+  return *bullet::once_per_key<std::unique_ptr<ObjectSurface>>(
+      mesh_key, [&]() { return build_surface(mesh); });
 }
 
 namespace {
