@@ -89,6 +89,9 @@ struct GraspSimulation::Impl {
   Eigen::VectorXd hold_sign;
   /// Levers of the joints on the planned contacts at the plan (contact_levers) [m or -].
   Eigen::VectorXd plan_lever;
+  /// Squeeze effort of each joint from the close on (close_push(); 0 before, and for joints
+  /// that hold the plan) [N·m or N], signed as it pushes.
+  Eigen::VectorXd squeeze_push;
   double squeeze_fraction = 1.0;  ///< ramps the springs' effort in at the start of the squeeze
   std::vector<int> actor_joints;     ///< driven joints of the actors
   std::vector<double> actor_sign;    ///< +1/−1: direction that closes
@@ -288,6 +291,7 @@ GraspSimulation::Impl::Impl(const Mesh& mesh, const HandModel& h, const Grasp& g
   q_target = q_start;
   effort_cap = Eigen::VectorXd::Zero(n);
   hold_sign = Eigen::VectorXd::Zero(n);
+  squeeze_push = Eigen::VectorXd::Zero(n);
   qd_feedforward = Eigen::VectorXd::Zero(n);
   spring_gain = Eigen::VectorXd::Zero(n);
   speed_cap = Eigen::VectorXd::Constant(n, params.hold_speed);
@@ -535,6 +539,11 @@ void GraspSimulation::Impl::finish(PhaseResult& r, const Eigen::Isometry3d& X_BO
   for (size_t k = 0; k < hand_body->gears.size(); ++k)
     r.joint_efforts[static_cast<size_t>(hand_body->gear_joint[k])] =
         applied_impulse(*hand_body->gears[k]) / dt;
+  r.squeeze_effort_ratio = 0.0;
+  for (const int j : actor_joints)
+    if (squeeze_push[j] != 0.0)
+      r.squeeze_effort_ratio = std::max(r.squeeze_effort_ratio,
+                                        r.joint_efforts[static_cast<size_t>(j)] / squeeze_push[j]);
   r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - phase_start).count();
 }
 
@@ -710,6 +719,7 @@ PhaseResult GraspSimulation::close() {
   // Bounded close: the fingers push with their squeeze effort already while they reach, so
   // one that meets the object early presses it no harder than the squeeze will.
   const Eigen::VectorXd push = s.close_push();
+  s.squeeze_push = push;
   if (s.bounded())
     for (const int j : s.actor_joints) s.effort_cap[j] = std::abs(push[j]);
   const Eigen::Isometry3d X_WB0 = s.X_WB_cmd;

@@ -198,8 +198,12 @@ class CandidateSource {
   bool sampling_ = false;  ///< cord: every exploration spent, PlanParams::fallback_attempts
 };
 
-/// Counts a first trial that lost the object in phase `phase` (settle counts as close).
-void count_loss(ValidationStats& vs, const std::string& phase) {
+/// Counts a first trial `first` that lost the object in phase `phase` (settle counts as close).
+void count_loss(ValidationStats& vs, const SimResult& first, const std::string& phase) {
+  if (phase == "lift" || phase == "shake" || phase == "gravity6") {
+    const PhaseResult* close = first.phase("close");
+    if (close && close->squeeze_effort_ratio < kPressingEffortRatio) ++vs.lost_not_pressing;
+  }
   if (phase == "lift")
     ++vs.lost_in_lift;
   else if (phase == "shake")
@@ -298,7 +302,7 @@ ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, Pla
     if (v.require_held_as_planned && !first.held()) {
       vs.physics_s += seconds_since(physics_start);
       const PhaseResult* failed = first.failed_phase();
-      count_loss(vs, failed ? failed->name : std::string("close"));
+      count_loss(vs, first, failed ? failed->name : std::string("close"));
       say("candidate " + std::to_string(candidate) + ": not held as planned (" +
           to_string(first.outcome) + (failed ? " in " + failed->name : std::string()) + ")");
       continue;

@@ -1,7 +1,8 @@
 // Physics validation of grasps from the cord planner (docs/physics.md): the default hand's first
 // force-closure grasp on the shipped box is tested as planned and holds, squeezed either way;
-// quick's squeeze holds the cylinder only after moving it; on every shipped object the
-// simulation stays finite and stable.
+// planned short of the box, its fingers end the close without pressing it; quick's squeeze holds
+// the cylinder only after moving it; on every shipped object the simulation stays finite and
+// stable.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,8 +11,10 @@
 
 #include "cordgrasp/collision/bullet_hand_collider.h"
 #include "cordgrasp/core/hand_io.h"
+#include "cordgrasp/core/kinematics.h"
 #include "cordgrasp/core/mesh_io.h"
 #include "cordgrasp/core/plan_cord_grasps.h"
+#include "cordgrasp/sim/grasp_validation.h"
 #include "cordgrasp/sim/validate_grasp.h"
 #include "test_paths.h"
 
@@ -75,12 +78,37 @@ TEST(ValidatePlannedGrasp, ForceClosureSahGraspOnTheBoxIsTestedAsPlannedAndHolds
     EXPECT_TRUE(p->in_contact) << name;
   }
   EXPECT_LT(r.phase("close")->translation_m, kPlannedShift_m);
+  // The fingers press the box with their squeeze effort when the lift begins.
+  EXPECT_GE(r.phase("close")->squeeze_effort_ratio, kPressingEffortRatio);
+  EXPECT_EQ(r.phase("settle")->squeeze_effort_ratio, 0.0);  // before the close
   ASSERT_EQ(r.planned_contact_offsets_m.size(), grasp.contacts.size());
   for (const double d : r.planned_contact_offsets_m) EXPECT_LT(d, kContactOffset_m);
   const PhaseResult& shake = *r.phase("shake");
   EXPECT_LT(shake.translation_m, SimParams{}.held_translation_m);
   EXPECT_LT(shake.rotation_rad, SimParams{}.held_rotation_rad);
   EXPECT_LT(shake.max_penetration_m, kMaxPenetration_m);
+}
+
+TEST(ValidatePlannedGrasp, FingersPlannedShortOfTheBoxEndTheCloseWithoutPressingIt) {
+  // The same grasp with every finger's planned value a few millimetres short of the box: the
+  // bounded squeeze (1 mm past the plan) ends without load, and sim.json's ratio says so.
+  constexpr double kShort_m = 4e-3;  // at the finger's lever, beyond the squeeze's travel
+  const Mesh mesh = load_mesh(shipped_object("box"));
+  Grasp grasp = first_planned_grasp(mesh, default_hand());
+  ASSERT_GT(grasp.q.size(), 0) << "no force-closure grasp planned";
+  const HandModel& hand = default_hand();
+  const Eigen::VectorXd lever = contact_levers(hand, grasp.q, grasp.X_OB, grasp.contacts);
+  for (const Actor& actor : hand.actors)
+    for (const auto& e : actor.joints)
+      if (lever[e.joint] > 0.0)
+        grasp.q[e.joint] -= std::copysign(kShort_m / lever[e.joint], e.direction_speed);
+  grasp.q = clamp_to_limits(hand, apply_couplings(hand, grasp.q));
+  const SimResult r =
+      validate_grasp(mesh, hand, grasp, planner_contact_params(), SimTests{true, false, false});
+  const PhaseResult* close = r.phase("close");
+  ASSERT_NE(close, nullptr);
+  EXPECT_LT(close->squeeze_effort_ratio, kPressingEffortRatio) << close->detail;
+  EXPECT_NE(r.outcome, Outcome::kHeld);
 }
 
 TEST(ValidatePlannedGrasp, QuickSqueezeHoldsTheCylinderGraspOnlyAfterMovingIt) {

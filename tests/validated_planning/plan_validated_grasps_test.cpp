@@ -363,7 +363,9 @@ TEST(PlanValidatedGrasps, ValidationRecordRoundTripsThroughPlanJsonAndIsReadStri
   // A plan written before the loss counts existed reads them as 0; an unknown count is refused.
   nlohmann::json older = j;
   older["validation"]["stats"].erase("lost_in_lift");
+  older["validation"]["stats"].erase("lost_not_pressing");
   EXPECT_EQ(plan_from_json(older, box.hand, "plan.json").validation->stats.lost_in_lift, 0);
+  EXPECT_EQ(plan_from_json(older, box.hand, "plan.json").validation->stats.lost_not_pressing, 0);
   nlohmann::json unknown_count = j;
   unknown_count["validation"]["stats"]["lost_in_space"] = 1;
   EXPECT_THROW(plan_from_json(unknown_count, box.hand, "plan.json"), InputError);
@@ -480,6 +482,8 @@ TEST(PlanValidatedGrasps, SaysWhereCandidatesLostAnObjectTooHeavyForTheHand) {
   const std::string message = no_accepted_grasp_message("plan", plan, box.mesh);
   EXPECT_NE(message.find("lost the object (20.000 kg) in lift or shake"), std::string::npos)
       << message;
+  // The gripper's pads pressed the box at their effort caps: too weak, not idle.
+  EXPECT_LT(2 * s.lost_not_pressing, s.lost_in_lift + s.lost_in_shake);
   EXPECT_NE(message.find("lost as planned in close " + std::to_string(s.lost_in_close) + ", lift " +
                          std::to_string(s.lost_in_lift)),
             std::string::npos)
@@ -491,6 +495,17 @@ TEST(PlanValidatedGrasps, SaysWhereCandidatesLostAnObjectTooHeavyForTheHand) {
   c.lost_in_lift = c.lost_in_shake = 0;
   EXPECT_EQ(no_accepted_grasp_message("plan", closing, box.mesh).find("lost the object"),
             std::string::npos);
+  // Fingers that touched the object without pressing it say so instead of blaming the weight.
+  PlanDocument idle = plan;
+  ValidationStats& i = idle.validation->stats;
+  i.lost_not_pressing = i.lost_in_lift + i.lost_in_shake;
+  const std::string idle_message = no_accepted_grasp_message("plan", idle, box.mesh);
+  EXPECT_NE(idle_message.find("with no finger pressing it"), std::string::npos) << idle_message;
+  EXPECT_EQ(idle_message.find("effort limits"), std::string::npos) << idle_message;
+  EXPECT_NE(idle_message.find(std::to_string(i.lost_not_pressing) +
+                              " after the close with no finger pressing the object"),
+            std::string::npos)
+      << idle_message;
   std::filesystem::remove_all(dir);
 }
 

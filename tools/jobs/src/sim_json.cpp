@@ -93,6 +93,7 @@ nlohmann::json sim_result_to_json(const SimResult& r, const HandModel& hand) {
                       {"max_contact_count", p.max_contact_count},
                       {"max_penetration_m", p.max_penetration_m},
                       {"joint_efforts", efforts},
+                      {"squeeze_effort_ratio", p.squeeze_effort_ratio},
                       {"sim_time_s", p.sim_time_s},
                       {"wall_time_s", p.wall_time_s},
                       {"steps", p.steps}});

@@ -45,6 +45,9 @@ std::string losses_text(const ValidationStats& s) {
   add("shake", s.lost_in_shake, true);
   add("gravity6", s.lost_in_gravity6, false);
   text += "; lost as planned in " + phases;
+  if (s.lost_not_pressing > 0)
+    text += " (" + std::to_string(s.lost_not_pressing) +
+            " after the close with no finger pressing the object)";
   text += "; " + std::to_string(s.lost_in_later_trials) + " in later trials";
   return text;
 }
@@ -68,14 +71,20 @@ std::string no_accepted_grasp_message(const std::string& who, const PlanDocument
   if (!doc.validation || doc.validation->stats.force_closure == 0)
     return no_grasp_message(who, doc, mesh);
   const ValidationStats& s = doc.validation->stats;
-  // Most candidates dropped by gravity: the grip, not the planner, is short.
-  const bool weak_grip = 2 * (s.lost_in_lift + s.lost_in_shake) > s.simulated;
+  // Most candidates dropped by gravity: the grip, not the planner, is short; either the
+  // fingers pressed at their effort caps (too weak for the weight) or they did not press.
+  const int after_close = s.lost_in_lift + s.lost_in_shake + s.lost_in_gravity6;
+  std::string grip;
+  if (2 * (s.lost_in_lift + s.lost_in_shake) > s.simulated)
+    grip = 2 * s.lost_not_pressing > after_close
+               ? "; most candidates lost the object in lift or shake with no finger pressing it "
+                 "at the end of the close: the fingers ended on the planned contacts without load, "
+                 "or short of them (the squeeze goes squeeze_travel_m past them, physics.md §3a)"
+               : "; most candidates lost the object (" + fixed(s.object_mass_kg, 3) +
+                     " kg) in lift or shake: the hand's joint effort limits may be too low for "
+                     "its weight (mass_kg in the physics settings sets the mass)";
   return who + ": no grasp of " + doc.object_name + " with " + doc.hand_name +
-         " accepted in physics (" + validation_stats_line(s, doc.params.grasps) + ")" +
-         (weak_grip ? "; most candidates lost the object (" + fixed(s.object_mass_kg, 3) +
-                          " kg) in lift or shake: the hand's joint effort limits may be too low "
-                          "for its weight (mass_kg in the physics settings sets the mass)"
-                    : std::string()) +
+         " accepted in physics (" + validation_stats_line(s, doc.params.grasps) + ")" + grip +
          "; try " + (s.budget_spent ? "a larger validation.budget_s (--settings), " : "") +
          "another --seed or --planner" +
          (is_none(doc.validation->params.uncertainty) ? "" : " or a lower --min-hold-probability");

@@ -43,6 +43,10 @@ struct PhaseResult {
   /// Effort each joint's servo (mimic joints: their gear) applied in the last step, one entry
   /// per HandModel joint, 0 for fixed joints [N·m or N].
   std::vector<double> joint_efforts;
+  /// From the close on: the largest effort a squeezing joint applied toward closing in the last
+  /// step, over its squeeze effort; ≥ 1: a finger presses the object with its full squeeze, ≈ 0:
+  /// none presses it (0 before the close and when no joint squeezes) [-].
+  double squeeze_effort_ratio = 0.0;
   double sim_time_s = 0.0;          ///< simulated time [s]
   double wall_time_s = 0.0;         ///< wall-clock time [s]
   int steps = 0;                    ///< time steps taken
