@@ -4,8 +4,8 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <map>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -14,11 +14,12 @@
 #include "cordgrasp/core/error.h"
 #include "cordgrasp/core/hand_io.h"
 #include "cordgrasp/core/kinematics.h"
-#include "cordgrasp/sim/sim_params.h"
 #include "cordgrasp/jobs/plan_json.h"
 #include "cordgrasp/jobs/sim_json.h"
 #include "cordgrasp/jobs/validate_job.h"
 #include "cordgrasp/render/animation.h"
+#include "cordgrasp/sim/grasp_validation.h"
+#include "cordgrasp/sim/sim_params.h"
 #include "test_files.h"
 #include "test_paths.h"
 
@@ -185,6 +186,9 @@ TEST_F(ValidateCli, WritesSimJsonAndOneLinePerGraspAndATotal) {
   EXPECT_EQ(phases, (std::vector<std::string>{"settle", "close", "lift", "shake"}));
   const auto& lift = g["phases"][2];
   EXPECT_TRUE(lift["joint_efforts"].contains("left_finger_joint"));
+  // The held grasp's pads press the object at the end of the close; settle is before it.
+  EXPECT_GE(g["phases"][1]["squeeze_effort_ratio"].get<double>(), kPressingEffortRatio);
+  EXPECT_EQ(g["phases"][0]["squeeze_effort_ratio"].get<double>(), 0.0);
   EXPECT_GT(lift["contact_count"].get<int>(), 0);
   EXPECT_GT(lift["sim_time_s"].get<double>(), 1.9);
   EXPECT_GT(sim["object"]["mass_kg"].get<double>(), 0.0);
