@@ -200,10 +200,7 @@ class CandidateSource {
 
 /// Counts a first trial `first` that lost the object in phase `phase` (settle counts as close).
 void count_loss(ValidationStats& vs, const SimResult& first, const std::string& phase) {
-  if (phase == "lift" || phase == "shake" || phase == "gravity6") {
-    const PhaseResult* close = first.phase("close");
-    if (close && close->squeeze_effort_ratio < kPressingEffortRatio) ++vs.lost_not_pressing;
-  }
+  vs.lost_not_pressing += first.lost_without_pressing();
   if (phase == "lift")
     ++vs.lost_in_lift;
   else if (phase == "shake")

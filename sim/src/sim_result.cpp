@@ -33,6 +33,14 @@ const PhaseResult* SimResult::failed_phase() const {
   return nullptr;
 }
 
+bool SimResult::lost_without_pressing() const {
+  const PhaseResult* failed = held() ? nullptr : failed_phase();
+  if (!failed || (failed->name != "lift" && failed->name != "shake" && failed->name != "gravity6"))
+    return false;
+  const PhaseResult* close = phase("close");
+  return close && close->squeeze_effort_ratio < kPressingEffortRatio;
+}
+
 int count_held(const std::vector<Outcome>& outcomes) {
   return static_cast<int>(std::count(outcomes.begin(), outcomes.end(), Outcome::kHeld));
 }

@@ -671,9 +671,18 @@ TEST(FailuresLine, CountsEachGraspThatDidNotHoldUnderItsFirstFailedPhase) {
       result({{"settle", Outcome::kHeld}, {"close", Outcome::kHeld}, {"lift", Outcome::kHeld}},
              false),
       result({{"settle", Outcome::kHeld}, {"close", Outcome::kDropped}}, false)};
+  // The grasp lost in the lift ended its close with no finger pressing (ratio 0): counted.
   EXPECT_EQ(failures_line(results),
             "not held by phase: settle 0, close 2, lift 1, shake 0, gravity6 0; preshape "
+            "overlaps 1; no finger pressing after the close 1");
+  std::vector<SimResult> pressed = results;
+  pressed[1].phases[1].squeeze_effort_ratio = 1.0;  // its fingers pressed at their caps
+  EXPECT_EQ(failures_line(pressed),
+            "not held by phase: settle 0, close 2, lift 1, shake 0, gravity6 0; preshape "
             "overlaps 1");
+  EXPECT_FALSE(pressed[1].lost_without_pressing());
+  EXPECT_TRUE(results[1].lost_without_pressing());
+  EXPECT_FALSE(results[0].lost_without_pressing());  // lost in the close: not counted
 }
 
 TEST(SimResultLine, SaysHowFarSettlePushedTheObjectWhenThePreshapeHandOverlapsIt) {

@@ -176,30 +176,34 @@ nlohmann::json sim_to_json(const SimDocument& doc, const HandModel& hand) {
   const bool uncertain = !doc.hold_probabilities.empty();
   params["uncertainty"] = uncertain ? params_to_json(doc.uncertainty) : nlohmann::json(nullptr);
   params["hold_probability"] = uncertain ? params_to_json(doc.hold_test) : nlohmann::json(nullptr);
-  nlohmann::json out = {{"format", kFormat},
-          {"format_version", kFormatVersion},
-          {"cordgrasp_version", version()},
-          {"backend", sim_backend_version()},
-          {"inputs",
-           {{"plan", doc.plan_path},
-            {"hand", {{"name", doc.hand_name}, {"path", doc.hand_path}}},
-            {"object", {{"path", doc.object_path}, {"name", doc.object_name},
-                        {"units", doc.object_units}, {"scale", doc.object_scale},
-                        {"triangles", doc.object_triangles}}},
-            {"plan_seed", doc.plan_seed ? nlohmann::json(*doc.plan_seed)
-                                        : nlohmann::json(nullptr)}}},
-          {"parameters", params},
-          {"object", object},
-          {"grasps", grasps},
-          {"summary",
-           {{"grasps", static_cast<int>(doc.results.size())},
-            {"held", held},
-            {"outcomes", outcomes},
-            {"not_held_by_phase", not_held_by_phase},
-            {"preshape_overlaps", failures.preshape_overlaps},
-            {"wall_time_s", doc.wall_time_s},
-            {"trials", repeated ? nlohmann::json(total_trials) : nlohmann::json(nullptr)},
-            {"held_trials", repeated ? nlohmann::json(held_trials) : nlohmann::json(nullptr)}}}};
+  nlohmann::json out = {
+      {"format", kFormat},
+      {"format_version", kFormatVersion},
+      {"cordgrasp_version", version()},
+      {"backend", sim_backend_version()},
+      {"inputs",
+       {{"plan", doc.plan_path},
+        {"hand", {{"name", doc.hand_name}, {"path", doc.hand_path}}},
+        {"object",
+         {{"path", doc.object_path},
+          {"name", doc.object_name},
+          {"units", doc.object_units},
+          {"scale", doc.object_scale},
+          {"triangles", doc.object_triangles}}},
+        {"plan_seed", doc.plan_seed ? nlohmann::json(*doc.plan_seed) : nlohmann::json(nullptr)}}},
+      {"parameters", params},
+      {"object", object},
+      {"grasps", grasps},
+      {"summary",
+       {{"grasps", static_cast<int>(doc.results.size())},
+        {"held", held},
+        {"outcomes", outcomes},
+        {"not_held_by_phase", not_held_by_phase},
+        {"preshape_overlaps", failures.preshape_overlaps},
+        {"not_pressing_after_close", failures.not_pressing},
+        {"wall_time_s", doc.wall_time_s},
+        {"trials", repeated ? nlohmann::json(total_trials) : nlohmann::json(nullptr)},
+        {"held_trials", repeated ? nlohmann::json(held_trials) : nlohmann::json(nullptr)}}}};
   mark_completeness(&out, doc.interrupted);
   return out;
 }

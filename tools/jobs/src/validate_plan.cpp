@@ -229,6 +229,7 @@ FailureCounts count_failures(const std::vector<SimResult>& results) {
     counts.by_phase.emplace_back(name, 0);
   for (const SimResult& r : results) {
     counts.preshape_overlaps += r.preshape_overlap;
+    counts.not_pressing += r.lost_without_pressing();
     if (const PhaseResult* failed = r.held() ? nullptr : r.failed_phase())
       for (auto& [name, count] : counts.by_phase)
         if (name == failed->name) ++count;
@@ -242,7 +243,10 @@ std::string failures_line(const std::vector<SimResult>& results) {
   for (size_t i = 0; i < counts.by_phase.size(); ++i)
     line += (i ? ", " : " ") + counts.by_phase[i].first + " " +
             std::to_string(counts.by_phase[i].second);
-  return line + "; preshape overlaps " + std::to_string(counts.preshape_overlaps);
+  line += "; preshape overlaps " + std::to_string(counts.preshape_overlaps);
+  if (counts.not_pressing > 0)
+    line += "; no finger pressing after the close " + std::to_string(counts.not_pressing);
+  return line;
 }
 
 std::string sim_result_line(const SimResult& r) {

@@ -89,11 +89,6 @@ struct GraspValidation {
   }
 };
 
-/// A finger presses the object when its squeeze joint applies at least this share of its
-/// squeeze effort (PhaseResult::squeeze_effort_ratio): pressing fingers end the close at their
-/// effort cap (1, or squeeze_hold_factor when pushed back), the others near 0 [-].
-inline constexpr double kPressingEffortRatio = 0.5;
-
 /// Counts of one validated plan; times from the plan's start, wall clock unless named CPU [s].
 struct ValidationStats {
   int attempts = 0;          ///< finger-stage runs of the planner
@@ -110,8 +105,8 @@ struct ValidationStats {
   int lost_in_gravity6 = 0;
   int lost_in_later_trials = 0;  ///< went on to the later trials and was not accepted
   /// Of those lost in lift, shake or gravity6, the ones whose fingers did not press the object
-  /// at the end of the close (PhaseResult::squeeze_effort_ratio below kPressingEffortRatio):
-  /// lost for want of a squeeze, not for the hand's strength.
+  /// at the end of the close (SimResult::lost_without_pressing): lost for want of a squeeze,
+  /// not for the hand's strength.
   int lost_not_pressing = 0;
   double object_mass_kg = 0.0;   ///< object mass as simulated (0: nothing simulated) [kg]
   int trials_run = 0;        ///< physics trials run in all

@@ -52,6 +52,11 @@ struct PhaseResult {
   int steps = 0;                    ///< time steps taken
 };
 
+/// A finger presses the object when its squeeze joint applies at least this share of its
+/// squeeze effort (PhaseResult::squeeze_effort_ratio): pressing fingers end the close at their
+/// effort cap (1, or squeeze_hold_factor when pushed back), the others near 0 [-].
+inline constexpr double kPressingEffortRatio = 0.5;
+
 /// The object as simulated.
 struct SimObjectInfo {
   ObjectShape shape = ObjectShape::kConvexHull;  ///< the shape used (kAuto resolved)
@@ -89,6 +94,9 @@ struct SimResult {
   const PhaseResult* phase(const std::string& name) const;
   /// The first phase that ran and did not hold, or nullptr.
   const PhaseResult* failed_phase() const;
+  /// Lost in lift, shake or gravity6 with no finger pressing the object at the end of the
+  /// close (its squeeze_effort_ratio below kPressingEffortRatio).
+  bool lost_without_pressing() const;
 };
 
 }  // namespace cordgrasp

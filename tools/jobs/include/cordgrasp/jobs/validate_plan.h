@@ -123,10 +123,12 @@ std::string sim_result_line(const SimResult& result);
 struct FailureCounts {
   std::vector<std::pair<std::string, int>> by_phase;
   int preshape_overlaps = 0;
+  int not_pressing = 0;  ///< lost after the close with no finger pressing (lost_without_pressing)
 };
 FailureCounts count_failures(const std::vector<SimResult>& results);
 
-/// "not held by phase: settle 0, close 2, lift 1, shake 0, gravity6 0; preshape overlaps 1"
+/// "not held by phase: settle 0, close 2, lift 1, shake 0, gravity6 0; preshape overlaps 1",
+/// then "; no finger pressing after the close 1" when any.
 std::string failures_line(const std::vector<SimResult>& results);
 
 }  // namespace cordgrasp
