@@ -36,6 +36,7 @@ write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/cordgrasp-config-ve
   VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/cordgrasp-config.cmake
               ${CMAKE_CURRENT_BINARY_DIR}/cordgrasp-config-version.cmake
+              ${CMAKE_CURRENT_SOURCE_DIR}/cmake/FindGLPK.cmake
         DESTINATION ${CORDGRASP_CMAKE_DIR})
 
 # Installs this build into a temporary prefix and builds and runs tests/install against it.

@@ -11,6 +11,7 @@ PKGS=(
   libassimp-dev
   libosmesa6-dev
   libqhull-dev                            # reentrant qhull_r + qhullcpp
+  libglpk-dev                             # GLPK: the weight margin's linear program
   libcli11-dev
   libpolyclipping-dev                     # Clipper 6.4.2, for the XOR measure
   nlohmann-json3-dev

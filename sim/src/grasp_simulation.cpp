@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "cordgrasp/core/kinematics.h"
+#include "cordgrasp/core/weight_margin.h"
 #include "cordgrasp/sim/motion_profiles.h"
 #include "cordgrasp/sim/turn_keeps_surface.h"
 #include "cordgrasp/sim/validate_grasp.h"
@@ -1013,6 +1014,27 @@ std::vector<double> GraspSimulation::planned_contact_offsets() const {
 const SimObjectInfo& GraspSimulation::object_info() const { return impl_->object->info; }
 
 Eigen::Isometry3d GraspSimulation::X_WO_start() const { return impl_->X_WO0; }
+
+double GraspSimulation::weight_margin() const {
+  const Impl& s = *impl_;
+  const Eigen::Index n = static_cast<Eigen::Index>(s.hand.joints.size());
+  // What each servo resists once pushed back: its effort limit, or for a pushing joint of the
+  // bounded close squeeze_hold_factor × its squeeze effort (at most the limit). Joints the
+  // physics locks have no servo (0): rigid.
+  Eigen::VectorXd caps(n);
+  for (Eigen::Index j = 0; j < n; ++j) caps[j] = s.hand_body->effort_limit[static_cast<size_t>(j)];
+  if (s.bounded()) {
+    const Eigen::VectorXd push = s.close_push();
+    for (const int j : s.actor_joints)
+      if (push[j] != 0.0)
+        caps[j] = std::min(caps[j], s.params.squeeze_hold_factor * std::abs(push[j]));
+  }
+  StaticLoad load;
+  load.com_O_m = s.object->X_OC.translation();
+  load.weight_O_N = s.object->info.mass_kg * s.params.gravity_mps2 *
+                    (s.X_WO0.linear().transpose() * -Eigen::Vector3d::UnitZ());
+  return cordgrasp::weight_margin(s.hand, s.grasp, s.params.contact, load, caps);
+}
 
 void GraspSimulation::set_segment_hook(PhaseHook hook) { impl_->segment_hook = std::move(hook); }
 

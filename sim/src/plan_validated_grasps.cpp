@@ -201,6 +201,7 @@ class CandidateSource {
 /// Counts a first trial `first` that lost the object in phase `phase` (settle counts as close).
 void count_loss(ValidationStats& vs, const SimResult& first, const std::string& phase) {
   vs.lost_not_pressing += first.lost_without_pressing();
+  vs.lost_below_weight_margin += first.lost_below_weight_margin();
   if (phase == "lift")
     ++vs.lost_in_lift;
   else if (phase == "shake")

@@ -41,6 +41,13 @@ bool SimResult::lost_without_pressing() const {
   return close && close->squeeze_effort_ratio < kPressingEffortRatio;
 }
 
+bool SimResult::lost_below_weight_margin() const {
+  const PhaseResult* failed = held() ? nullptr : failed_phase();
+  return failed &&
+         (failed->name == "lift" || failed->name == "shake" || failed->name == "gravity6") &&
+         weight_margin && *weight_margin < 1.0;
+}
+
 int count_held(const std::vector<Outcome>& outcomes) {
   return static_cast<int>(std::count(outcomes.begin(), outcomes.end(), Outcome::kHeld));
 }

@@ -94,6 +94,7 @@ SimResult validate_grasp(const Mesh& mesh, const HandModel& hand, const Grasp& g
     GraspSimulation sim(mesh, hand, grasp, params);
     result.object = sim.object_info();
     result.X_WO = sim.X_WO_start();
+    if (!grasp.contacts.empty()) result.weight_margin = sim.weight_margin();
     sim.set_segment_hook(hook);
     const bool ready = settle_and_close(sim, result, hook, true, params.squeeze_shift_limit_m);
     const PhaseResult* settle = result.phase("settle");

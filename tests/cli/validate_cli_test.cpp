@@ -189,6 +189,7 @@ TEST_F(ValidateCli, WritesSimJsonAndOneLinePerGraspAndATotal) {
   // The held grasp's pads press the object at the end of the close; settle is before it.
   EXPECT_GE(g["phases"][1]["squeeze_effort_ratio"].get<double>(), kPressingEffortRatio);
   EXPECT_EQ(g["phases"][0]["squeeze_effort_ratio"].get<double>(), 0.0);
+  EXPECT_TRUE(g["weight_margin"].is_null());  // this plan names no planned contacts
   EXPECT_GT(lift["contact_count"].get<int>(), 0);
   EXPECT_GT(lift["sim_time_s"].get<double>(), 1.9);
   EXPECT_GT(sim["object"]["mass_kg"].get<double>(), 0.0);

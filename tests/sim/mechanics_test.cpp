@@ -1,6 +1,7 @@
 // Physics against mechanics: cases whose answer is known on paper. Each test sweeps a load on
 // the shipped parallel gripper (docs/physics.md §2–§4) and checks that the simulated threshold
-// between held and not held lies within kThresholdRelTol of the analytic one.
+// between held and not held lies within kThresholdRelTol of the analytic one; the pinches also
+// check the planner-side weight margin (core weight_margin.h) against the simulated threshold.
 //
 // The load is gravity during a slow lift (1 cm in 1 s, then a 0.5 s hold without the rest
 // exit): the hand's acceleration is at most 5.7735·h/T² = 0.058 m/s² (minimum jerk), 0.6 % of
@@ -91,6 +92,23 @@ Grasp pinch_at_origin(double half_width_m) {
   return test::top_down_pinch(gripper(), Eigen::Vector3d::Zero(), half_width_m, kOpenGripper_m);
 }
 
+/// The mass whose weight the pinch's planned contacts carry exactly within the joints' effort
+/// limits: GraspSimulation::weight_margin() = 1 [kg]. The margin falls as 1 / mass, so this is
+/// the margin at 1 kg. The contacts: each pad touching the object on x_O at ±half_width_m.
+double unit_margin_mass_kg(const Mesh& mesh, Grasp grasp, double half_width_m, SimParams params) {
+  const std::vector<Eigen::Isometry3d> X_OL = link_poses(gripper(), grasp.q, grasp.X_OB);
+  for (const char* name : {"left_finger", "right_finger"}) {
+    Contact c;
+    c.link = find_link(gripper(), name);
+    const double side = X_OL[static_cast<size_t>(c.link)].translation().x() > 0.0 ? 1.0 : -1.0;
+    c.p_O = Eigen::Vector3d(side * half_width_m, 0, 0);
+    c.n_O = side * Eigen::Vector3d::UnitX();
+    grasp.contacts.push_back(c);
+  }
+  params.mass_kg = 1.0;
+  return GraspSimulation(mesh, gripper(), grasp, params).weight_margin() * 1.0;
+}
+
 /// Outcome of a sweep: the heaviest mass held, the lightest not held [kg], and the pressing
 /// force per pad measured in the lift that held the heaviest mass [N].
 struct Threshold {
@@ -168,6 +186,11 @@ TEST(Mechanics, PinchedBoxHoldsUpToTheMassWhoseWeightEqualsTwiceMuTimesThePadFor
   const double analytic_kg = 2.0 * mu * t.pad_force_N / lift_load_mps2(params);
   report("pinched box", t, analytic_kg);
   EXPECT_NEAR(t.estimate_kg(), analytic_kg, kThresholdRelTol * analytic_kg);
+  // The planner-side weight margin puts the threshold where the simulation does.
+  const double margin_kg =
+      unit_margin_mass_kg(box, pinch_at_origin(0.5 * kBoxSide_m), 0.5 * kBoxSide_m, params);
+  std::cout << "pinched box: weight margin 1 at " << margin_kg << " kg\n";
+  EXPECT_NEAR(margin_kg, t.estimate_kg(), kThresholdRelTol * t.estimate_kg());
 }
 
 /// A right circular cone of base radius `radius_m` and height `height_m` as an
@@ -235,6 +258,10 @@ TEST(Mechanics, ConePinchedAtItsRimTurnsOnceGravitysTorqueExceedsTheSoftFingersT
   const double analytic_kg = 2.0 * mu * r_m * t.pad_force_N / (lift_load_mps2(params) * d_m);
   report("cone torsion", t, analytic_kg);
   EXPECT_NEAR(t.estimate_kg(), analytic_kg, kThresholdRelTol * analytic_kg);
+  const double margin_kg =
+      unit_margin_mass_kg(cone, pinch, kConeRadius_m - kRimVertexInset_m, params);
+  std::cout << "cone torsion: weight margin 1 at " << margin_kg << " kg\n";
+  EXPECT_NEAR(margin_kg, t.estimate_kg(), kThresholdRelTol * t.estimate_kg());
 }
 
 /// Lifts the gripper with `box` resting on its palm (world_frame kObject: gravity −z_O) under

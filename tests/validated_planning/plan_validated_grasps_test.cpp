@@ -96,6 +96,8 @@ TEST(PlanValidatedGrasps, AcceptedGraspsHoldWhenTheWrittenPlanIsValidatedAgain) 
     EXPECT_GE(g.at("trials").at("held").get<int>(), kMinHeld) << g.dump();
     // The first trial re-runs the grasp as planned, bit for bit: it holds again.
     EXPECT_EQ(g.at("trials").at("outcomes").at(0).get<std::string>(), "held") << g.dump();
+    // Its planned contacts carry the light box's weight many times over.
+    EXPECT_GT(g.at("weight_margin").get<double>(), 1.0) << g.dump();
   }
   std::filesystem::remove_all(dir);
 }
@@ -364,8 +366,11 @@ TEST(PlanValidatedGrasps, ValidationRecordRoundTripsThroughPlanJsonAndIsReadStri
   nlohmann::json older = j;
   older["validation"]["stats"].erase("lost_in_lift");
   older["validation"]["stats"].erase("lost_not_pressing");
-  EXPECT_EQ(plan_from_json(older, box.hand, "plan.json").validation->stats.lost_in_lift, 0);
-  EXPECT_EQ(plan_from_json(older, box.hand, "plan.json").validation->stats.lost_not_pressing, 0);
+  older["validation"]["stats"].erase("lost_below_weight_margin");
+  const PlanDocument old_plan = plan_from_json(older, box.hand, "plan.json");
+  EXPECT_EQ(old_plan.validation->stats.lost_in_lift, 0);
+  EXPECT_EQ(old_plan.validation->stats.lost_not_pressing, 0);
+  EXPECT_EQ(old_plan.validation->stats.lost_below_weight_margin, 0);
   nlohmann::json unknown_count = j;
   unknown_count["validation"]["stats"]["lost_in_space"] = 1;
   EXPECT_THROW(plan_from_json(unknown_count, box.hand, "plan.json"), InputError);
@@ -482,6 +487,16 @@ TEST(PlanValidatedGrasps, SaysWhereCandidatesLostAnObjectTooHeavyForTheHand) {
   const std::string message = no_accepted_grasp_message("plan", plan, box.mesh);
   EXPECT_NE(message.find("lost the object (20.000 kg) in lift or shake"), std::string::npos)
       << message;
+  // No contact of the gripper carries 20 kg within its effort limits: the weight margin, a
+  // static bound computed before the physics, says so for every candidate lost to gravity.
+  EXPECT_EQ(s.lost_below_weight_margin, s.lost_in_lift + s.lost_in_shake + s.lost_in_gravity6);
+  EXPECT_NE(message.find("cannot carry its weight within the hand's joint effort limits"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find(std::to_string(s.lost_below_weight_margin) +
+                         " with contacts too weak for the weight"),
+            std::string::npos)
+      << message;
   // The gripper's pads pressed the box at their effort caps: too weak, not idle.
   EXPECT_LT(2 * s.lost_not_pressing, s.lost_in_lift + s.lost_in_shake);
   EXPECT_NE(message.find("lost as planned in close " + std::to_string(s.lost_in_close) + ", lift " +
@@ -499,9 +514,19 @@ TEST(PlanValidatedGrasps, SaysWhereCandidatesLostAnObjectTooHeavyForTheHand) {
   PlanDocument idle = plan;
   ValidationStats& i = idle.validation->stats;
   i.lost_not_pressing = i.lost_in_lift + i.lost_in_shake;
+  i.lost_below_weight_margin = 0;
   const std::string idle_message = no_accepted_grasp_message("plan", idle, box.mesh);
   EXPECT_NE(idle_message.find("with no finger pressing it"), std::string::npos) << idle_message;
   EXPECT_EQ(idle_message.find("effort limits"), std::string::npos) << idle_message;
+  // Pressing fingers whose contacts could carry the weight: neither the hand nor the squeeze.
+  PlanDocument strong = plan;
+  ValidationStats& g = strong.validation->stats;
+  g.lost_below_weight_margin = g.lost_not_pressing = 0;
+  const std::string strong_message = no_accepted_grasp_message("plan", strong, box.mesh);
+  EXPECT_NE(strong_message.find("although their contacts could carry its weight"),
+            std::string::npos)
+      << strong_message;
+  EXPECT_EQ(strong_message.find("effort limits"), std::string::npos) << strong_message;
   EXPECT_NE(idle_message.find(std::to_string(i.lost_not_pressing) +
                               " after the close with no finger pressing the object"),
             std::string::npos)

@@ -108,6 +108,7 @@ nlohmann::json sim_result_to_json(const SimResult& r, const HandModel& hand) {
           {"preshape_overlap", r.preshape_overlap},
           {"wall_time_s", r.wall_time_s},
           {"planned_contact_offsets_m", offsets},
+          {"weight_margin", r.weight_margin ? nlohmann::json(*r.weight_margin) : nlohmann::json()},
           {"phases", phases}};
 }
 

@@ -45,9 +45,14 @@ std::string losses_text(const ValidationStats& s) {
   add("shake", s.lost_in_shake, true);
   add("gravity6", s.lost_in_gravity6, false);
   text += "; lost as planned in " + phases;
+  std::string why;
   if (s.lost_not_pressing > 0)
-    text += " (" + std::to_string(s.lost_not_pressing) +
-            " after the close with no finger pressing the object)";
+    why =
+        std::to_string(s.lost_not_pressing) + " after the close with no finger pressing the object";
+  if (s.lost_below_weight_margin > 0)
+    why += (why.empty() ? "" : ", ") + std::to_string(s.lost_below_weight_margin) +
+           " with contacts too weak for the weight";
+  if (!why.empty()) text += " (" + why + ")";
   text += "; " + std::to_string(s.lost_in_later_trials) + " in later trials";
   return text;
 }
@@ -71,18 +76,28 @@ std::string no_accepted_grasp_message(const std::string& who, const PlanDocument
   if (!doc.validation || doc.validation->stats.force_closure == 0)
     return no_grasp_message(who, doc, mesh);
   const ValidationStats& s = doc.validation->stats;
-  // Most candidates dropped by gravity: the grip, not the planner, is short; either the
-  // fingers pressed at their effort caps (too weak for the weight) or they did not press.
+  // Most candidates dropped by gravity: the grip, not the planner, is short: the planned
+  // contacts cannot carry the weight within the effort limits, or no finger pressed, or the
+  // object slipped or turned in a grip strong enough at rest.
   const int after_close = s.lost_in_lift + s.lost_in_shake + s.lost_in_gravity6;
   std::string grip;
-  if (2 * (s.lost_in_lift + s.lost_in_shake) > s.simulated)
-    grip = 2 * s.lost_not_pressing > after_close
-               ? "; most candidates lost the object in lift or shake with no finger pressing it "
-                 "at the end of the close: the fingers ended on the planned contacts without load, "
-                 "or short of them (the squeeze goes squeeze_travel_m past them, physics.md §3a)"
-               : "; most candidates lost the object (" + fixed(s.object_mass_kg, 3) +
-                     " kg) in lift or shake: the hand's joint effort limits may be too low for "
-                     "its weight (mass_kg in the physics settings sets the mass)";
+  if (2 * (s.lost_in_lift + s.lost_in_shake) > s.simulated) {
+    if (2 * s.lost_below_weight_margin > after_close)
+      grip = "; most candidates lost the object (" + fixed(s.object_mass_kg, 3) +
+             " kg) in lift or shake with planned contacts that cannot carry its weight within "
+             "the hand's joint effort limits (weight margin below 1, "
+             "finger-stage-and-quality.md): the hand is too weak for it there (mass_kg in the "
+             "physics settings sets the mass)";
+    else if (2 * s.lost_not_pressing > after_close)
+      grip =
+          "; most candidates lost the object in lift or shake with no finger pressing it "
+          "at the end of the close: the fingers ended on the planned contacts without load, "
+          "or short of them (the squeeze goes squeeze_travel_m past them, physics.md §3a)";
+    else
+      grip = "; most candidates lost the object (" + fixed(s.object_mass_kg, 3) +
+             " kg) in lift or shake although their contacts could carry its weight: it slipped "
+             "or turned in a grip strong enough at rest";
+  }
   return who + ": no grasp of " + doc.object_name + " with " + doc.hand_name +
          " accepted in physics (" + validation_stats_line(s, doc.params.grasps) + ")" + grip +
          "; try " + (s.budget_spent ? "a larger validation.budget_s (--settings), " : "") +

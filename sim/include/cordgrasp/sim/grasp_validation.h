@@ -58,11 +58,9 @@ struct ValidationParams {
     visit_fields(a, CORDGRASP_NVP(tests), CORDGRASP_NVP(protocol), CORDGRASP_NVP(trials),
                  CORDGRASP_NVP(min_held), CORDGRASP_NVP(require_held_as_planned),
                  CORDGRASP_NVP(uncertainty), CORDGRASP_NVP(min_hold_probability),
-                 CORDGRASP_NVP(max_draws),
-                 CORDGRASP_NVP(budget_s),
+                 CORDGRASP_NVP(max_draws), CORDGRASP_NVP(budget_s),
                  CORDGRASP_NVP(squeeze_shift_limit_m), CORDGRASP_NVP(perturbation),
-                 CORDGRASP_NVP(trial_seed), CORDGRASP_NVP(physics),
-                 CORDGRASP_NVP(physics_file));
+                 CORDGRASP_NVP(trial_seed), CORDGRASP_NVP(physics), CORDGRASP_NVP(physics_file));
   }
 };
 
@@ -108,6 +106,10 @@ struct ValidationStats {
   /// at the end of the close (SimResult::lost_without_pressing): lost for want of a squeeze,
   /// not for the hand's strength.
   int lost_not_pressing = 0;
+  /// Of those lost in lift, shake or gravity6, the ones whose planned contacts cannot carry the
+  /// object's weight within the hand's effort limits (SimResult::lost_below_weight_margin):
+  /// too weak a hand at those contacts, whatever its grip.
+  int lost_below_weight_margin = 0;
   double object_mass_kg = 0.0;   ///< object mass as simulated (0: nothing simulated) [kg]
   int trials_run = 0;        ///< physics trials run in all
   int accepted = 0;          ///< candidates held in ≥ min_held trials
@@ -127,10 +129,11 @@ struct ValidationStats {
         CORDGRASP_NVP(simulated), CORDGRASP_NVP(rejected_early), CORDGRASP_NVP(held_as_planned),
         CORDGRASP_NVP(lost_in_close), CORDGRASP_NVP(lost_in_lift), CORDGRASP_NVP(lost_in_shake),
         CORDGRASP_NVP(lost_in_gravity6), CORDGRASP_NVP(lost_in_later_trials),
-        CORDGRASP_NVP(lost_not_pressing), CORDGRASP_NVP(object_mass_kg), CORDGRASP_NVP(trials_run),
-        CORDGRASP_NVP(accepted), CORDGRASP_NVP(first_accepted_s), CORDGRASP_NVP(planning_s),
-        CORDGRASP_NVP(physics_s), CORDGRASP_NVP(total_s), CORDGRASP_NVP(first_accepted_cpu_s),
-        CORDGRASP_NVP(cpu_s), CORDGRASP_NVP(budget_spent));
+        CORDGRASP_NVP(lost_not_pressing), CORDGRASP_NVP(lost_below_weight_margin),
+        CORDGRASP_NVP(object_mass_kg), CORDGRASP_NVP(trials_run), CORDGRASP_NVP(accepted),
+        CORDGRASP_NVP(first_accepted_s), CORDGRASP_NVP(planning_s), CORDGRASP_NVP(physics_s),
+        CORDGRASP_NVP(total_s), CORDGRASP_NVP(first_accepted_cpu_s), CORDGRASP_NVP(cpu_s),
+        CORDGRASP_NVP(budget_spent));
   }
 };
 

@@ -1,6 +1,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -89,6 +90,9 @@ struct SimResult {
   /// in the object frame from the planned contact point to the nearest simulated hand–object
   /// contact point [m]; NaN when the object touches nothing. Empty when close did not run.
   std::vector<double> planned_contact_offsets_m;
+  /// GraspSimulation::weight_margin() of the grasp simulated (computed before the first step);
+  /// none for a grasp without planned contacts [-].
+  std::optional<double> weight_margin;
   bool held() const { return outcome == Outcome::kHeld; }
   /// The phase called `name`, or nullptr.
   const PhaseResult* phase(const std::string& name) const;
@@ -97,6 +101,9 @@ struct SimResult {
   /// Lost in lift, shake or gravity6 with no finger pressing the object at the end of the
   /// close (its squeeze_effort_ratio below kPressingEffortRatio).
   bool lost_without_pressing() const;
+  /// Lost in lift, shake or gravity6 with a weight_margin below 1: the planned contacts cannot
+  /// carry the object's weight within the servos' caps.
+  bool lost_below_weight_margin() const;
 };
 
 }  // namespace cordgrasp

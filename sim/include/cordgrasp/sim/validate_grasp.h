@@ -135,6 +135,12 @@ class GraspSimulation {
   const SimObjectInfo& object_info() const;
   /// Object frame in world at the start.
   Eigen::Isometry3d X_WO_start() const;
+  /// Weight margin (core weight_margin.h) of the planned contacts as this world tests them:
+  /// the simulated object's mass and centre of mass, gravity as in lift (SimParams::
+  /// world_frame), each joint's torque within what its servo resists (its effort limit; for a
+  /// pushing joint of the bounded close BoundedClose::hold_effort; locked joints rigid).
+  /// Below 1 the planned contacts cannot carry the object's weight in this hand.
+  double weight_margin() const;
   /// Sets a hook called by shake() and gravity6() at the end of each segment, and every
   /// SimParams::trace_interval_s of simulated time inside every phase (phase_end = false).
   void set_segment_hook(PhaseHook hook);
