@@ -1,7 +1,5 @@
 #include "cordgrasp/core/grasp_quality.h"
 
-#include "cordgrasp/core/enum_names.h"
-
 #include <libqhullcpp/Qhull.h>
 #include <libqhullcpp/QhullError.h>
 
@@ -14,7 +12,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cordgrasp/core/enum_names.h"
 #include "cordgrasp/core/mesh_properties.h"
+#include "glpk_problem.h"
 
 extern "C" {
 #include <libqhull_r/qhull_ra.h>
@@ -49,6 +49,20 @@ bool full_rank(const std::vector<Wrench>& w) {
   const auto& s = svd.singularValues();
   if (s(0) <= 0.0) return false;
   return s(kDim - 1) > kRankTolerance * s(0);
+}
+
+// Whether some combination of the wrenches with every weight ≥ 1 (strictly positive, up to
+// scale) is zero: with full rank, exactly when the origin lies inside their hull. A linear
+// program, far cheaper than the hull: evaluate_grasp_quality builds the hull (for ε) only for
+// wrench sets that pass. A simplex that fails says yes (the hull decides).
+bool zero_in_positive_span(const std::vector<Wrench>& w) {
+  Eigen::MatrixXd a(kDim, static_cast<Eigen::Index>(w.size()));
+  for (size_t k = 0; k < w.size(); ++k) a.col(static_cast<Eigen::Index>(k)) = w[k];
+  GlpkProblem lp = make_glpk_problem(a);
+  for (int r = 1; r <= kDim; ++r) glp_set_row_bnds(lp.get(), r, GLP_FX, 0.0, 0.0);
+  for (int c = 1; c <= static_cast<int>(w.size()); ++c)
+    glp_set_col_bnds(lp.get(), c, GLP_LO, 1.0, 0.0);
+  return solve_glpk_problem(lp.get()) != GLP_NOFEAS;
 }
 
 double mu_for(const QualityParams& params) {
@@ -194,6 +208,8 @@ GraspQuality evaluate_grasp_quality(const std::vector<Contact>& contacts,
                          object.torque_scale_per_m, params.contact.soft_finger_radius_m);
     w.insert(w.end(), cw.begin(), cw.end());
   }
+  // Textbook force closure needs the origin inside the hull: most attempts fail the cheap test.
+  if (params.mode == QualityMode::kTextbook && !zero_in_positive_span(w)) return out;
   out.hull = wrench_hull(w);
   if (!out.hull.valid) return out;
   if (params.mode == QualityMode::kSimox) {

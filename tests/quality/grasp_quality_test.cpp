@@ -54,6 +54,53 @@ TEST(GraspQuality, OppositeContactsOnBoxAreNotForceClosureWithoutFriction) {
   EXPECT_EQ(q.epsilon, 0.0);
 }
 
+// The linear program that screens wrench sets before the hull (docs/finger-stage-and-quality.md)
+// changes no verdict and no ε: random contact sets on a sphere, from clearly not FC to clearly
+// FC, judged by evaluate_grasp_quality and by the hull of the same cone edges alone.
+TEST(GraspQuality, TextbookVerdictsAndEpsilonAreThoseOfTheHullAlone) {
+  constexpr int kSets = 200;
+  constexpr double kRadius_m = 0.05;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const auto random_direction = [&] {
+    Eigen::Vector3d d;
+    do d = Eigen::Vector3d(unit(rng), unit(rng), unit(rng));
+    while (d.norm() < 0.1 || d.norm() > 1.0);
+    return d.normalized();
+  };
+  const WrenchSpaceObject object = unit_object(1.0 / kRadius_m);
+  int fc = 0, not_fc = 0;
+  for (int k = 0; k < kSets; ++k) {
+    QualityParams params = textbook(std::uniform_real_distribution<double>(0.05, 1.0)(rng));
+    if (k % 2 == 1) params.contact.soft_finger_radius_m = 0.005;
+    const int n = std::uniform_int_distribution<int>(2, 5)(rng);
+    // Contacts on one cap of the sphere (spread < 1: often not FC) or all around it.
+    const double spread = std::uniform_real_distribution<double>(0.2, 2.0)(rng);
+    const Eigen::Vector3d pole = random_direction();
+    std::vector<Contact> contacts;
+    for (int c = 0; c < n; ++c) {
+      const Eigen::Vector3d d = (pole + spread * random_direction()).normalized();
+      contacts.push_back(contact(kRadius_m * d, d));
+    }
+    const GraspQuality q = evaluate_grasp_quality(contacts, object, params);
+    std::vector<Wrench> w;
+    for (const Contact& c : contacts) {
+      const auto cw = contact_wrenches(c.p_O, c.n_O, params.contact.mu, params.contact.cone_edges,
+                                       object.center_O, object.torque_scale_per_m,
+                                       params.contact.soft_finger_radius_m);
+      w.insert(w.end(), cw.begin(), cw.end());
+    }
+    const WrenchHull hull = wrench_hull(w);
+    const bool hull_fc = hull.valid && hull.min_origin_distance > params.min_epsilon;
+    EXPECT_EQ(q.force_closure, hull_fc) << "set " << k;
+    EXPECT_EQ(q.epsilon, hull_fc ? hull.min_origin_distance : 0.0) << "set " << k;
+    (hull_fc ? fc : not_fc) += 1;
+  }
+  // Both kinds occur often enough for the comparison to mean something.
+  EXPECT_GT(fc, kSets / 10);
+  EXPECT_GT(not_fc, kSets / 10);
+}
+
 // With point contacts, two contacts are never force closure in 6D, whatever μ: no contact force
 // has a moment about the line through both points, so every wrench has zero component along it.
 TEST(GraspQuality, TwoPointContactsAreNeverForceClosure) {
