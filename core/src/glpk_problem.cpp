@@ -29,6 +29,7 @@ GlpkProblem make_glpk_problem(const Eigen::MatrixXd& a) {
 }
 
 int solve_glpk_problem(glp_prob* problem) {
+  glp_term_out(GLP_OFF);  // the scaling reports on the terminal whatever msg_lev says
   glp_scale_prob(problem, GLP_SF_AUTO);
   glp_smcp parm;
   glp_init_smcp(&parm);

@@ -198,8 +198,11 @@ class CandidateSource {
   bool sampling_ = false;  ///< cord: every exploration spent, PlanParams::fallback_attempts
 };
 
-/// Counts a first trial `first` that lost the object in phase `phase` (settle counts as close).
-void count_loss(ValidationStats& vs, const SimResult& first, const std::string& phase) {
+/// Counts a first trial `first` that lost the object, by the phase that lost it (settle, or
+/// none named, counts as close).
+void count_loss(ValidationStats& vs, const SimResult& first) {
+  const PhaseResult* failed = first.failed_phase();
+  const std::string phase = failed ? failed->name : std::string("close");
   vs.lost_not_pressing += first.lost_without_pressing();
   vs.lost_below_weight_margin += first.lost_below_weight_margin();
   if (phase == "lift")
@@ -300,7 +303,7 @@ ValidatedPlan plan_validated_grasps(const Mesh& mesh, const HandModel& hand, Pla
     if (v.require_held_as_planned && !first.held()) {
       vs.physics_s += seconds_since(physics_start);
       const PhaseResult* failed = first.failed_phase();
-      count_loss(vs, first, failed ? failed->name : std::string("close"));
+      count_loss(vs, first);
       say("candidate " + std::to_string(candidate) + ": not held as planned (" +
           to_string(first.outcome) + (failed ? " in " + failed->name : std::string()) + ")");
       continue;

@@ -54,6 +54,7 @@ StaticLoad weight_down(double weight_N, const Eigen::Vector3d& com_O_m = Eigen::
 TEST(WeightMargin, PinchCarriesTwiceMuTimesTheJawForce) {
   const HandModel h = test::make_parallel_gripper();
   const Grasp g = pinch(h, 0.03);
+  testing::internal::CaptureStdout();  // the solver prints nothing
   for (const double mu : {0.3, 0.5, 1.0})
     for (const double force_N : {2.0, 10.0, 40.0}) {
       const Eigen::VectorXd efforts = Eigen::VectorXd::Constant(2, force_N);
@@ -63,6 +64,7 @@ TEST(WeightMargin, PinchCarriesTwiceMuTimesTheJawForce) {
       EXPECT_GE(margin, kPyramidLow * analytic - kSolverTol) << "mu " << mu << " F " << force_N;
       EXPECT_LE(margin, analytic + kSolverTol) << "mu " << mu << " F " << force_N;
     }
+  EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
 }
 
 TEST(WeightMarginPinch, IsLinearInTheEffortLimits) {
