@@ -33,19 +33,25 @@ const PhaseResult* SimResult::failed_phase() const {
   return nullptr;
 }
 
+namespace {
+
+/// Lost in a test after the close (lift, shake or gravity6).
+bool lost_after_close(const SimResult& r) {
+  const PhaseResult* failed = r.held() ? nullptr : r.failed_phase();
+  return failed &&
+         (failed->name == "lift" || failed->name == "shake" || failed->name == "gravity6");
+}
+
+}  // namespace
+
 bool SimResult::lost_without_pressing() const {
-  const PhaseResult* failed = held() ? nullptr : failed_phase();
-  if (!failed || (failed->name != "lift" && failed->name != "shake" && failed->name != "gravity6"))
-    return false;
+  if (!lost_after_close(*this)) return false;
   const PhaseResult* close = phase("close");
   return close && close->squeeze_effort_ratio < kPressingEffortRatio;
 }
 
 bool SimResult::lost_below_weight_margin() const {
-  const PhaseResult* failed = held() ? nullptr : failed_phase();
-  return failed &&
-         (failed->name == "lift" || failed->name == "shake" || failed->name == "gravity6") &&
-         weight_margin && *weight_margin < 1.0;
+  return lost_after_close(*this) && weight_margin && *weight_margin < 1.0;
 }
 
 int count_held(const std::vector<Outcome>& outcomes) {
